@@ -1,0 +1,1 @@
+//! Curve samplers (placeholder, being written).
