@@ -17,7 +17,7 @@ pub enum Error {
     },
     /// The coordinates span more binary orders of magnitude than exact predicates allow.
     #[error(
-        "point {index} has a coordinate ({value:e}) more than 2^170 times smaller than the \
+        "point {index} has a coordinate ({value:e}) more than about 2^172 times smaller than the \
          largest coordinate ({largest:e}); exact predicates cannot handle that range"
     )]
     CoordinateRange {

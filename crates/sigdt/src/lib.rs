@@ -20,6 +20,7 @@ pub mod curves;
 pub mod delaunay;
 pub mod error;
 pub mod geometry;
+pub mod graph;
 pub mod io;
 pub mod proximity;
 pub mod reconstruct;

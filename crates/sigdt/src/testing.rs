@@ -1,1 +1,139 @@
-//! Test checkers (placeholder).
+//! Checkers shared by every test layer (unit, property, golden, CLI, fuzz).
+//!
+//! [`check_reconstruction`] states the output invariants every method must keep: edges join
+//! two distinct valid indices and are sorted and unique; loops are closed, simple, disjoint
+//! and agree with the edges; a manifold status means every distinct point has degree 2; no
+//! two output edges cross.
+use crate::geometry::{segments_cross, Point};
+use crate::{Edge, Reconstruction, Status};
+use std::collections::HashMap;
+
+/// Checks the output invariants of `rec` for `points`; the error says what is violated.
+pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<(), String> {
+    let n = points.len();
+    for w in rec.edges.windows(2) {
+        if w[0] >= w[1] {
+            return Err(format!("edges not sorted and unique at {:?}, {:?}", w[0], w[1]));
+        }
+    }
+    for &[i, j] in &rec.edges {
+        if i >= j || j >= n {
+            return Err(format!("edge [{i}, {j}] is not [i < j] within {n} points"));
+        }
+        if points[i] == points[j] {
+            return Err(format!("edge [{i}, {j}] joins two equal points"));
+        }
+    }
+    let mut from_chains: Vec<Edge> = Vec::new();
+    let mut on_chain = vec![false; n];
+    for (closed, chain) in
+        rec.loops.iter().map(|l| (true, l)).chain(rec.paths.iter().map(|p| (false, p)))
+    {
+        if chain.len() < if closed { 3 } else { 2 } {
+            return Err(format!("chain {chain:?} is too short"));
+        }
+        for &v in chain {
+            if v >= n || std::mem::replace(&mut on_chain[v], true) {
+                return Err(format!("vertex {v} is out of range or on two chains / twice on one"));
+            }
+        }
+        let k = chain.len();
+        let links = if closed { k } else { k - 1 };
+        from_chains.extend((0..links).map(|a| {
+            let (x, y) = (chain[a], chain[(a + 1) % k]);
+            [x.min(y), x.max(y)]
+        }));
+    }
+    from_chains.sort_unstable();
+    if from_chains != rec.edges {
+        return Err("edges differ from the edges of the loops and paths".into());
+    }
+    if rec.status.is_manifold() {
+        let duplicate: Vec<bool> = {
+            let mut d = vec![false; n];
+            rec.duplicates.iter().for_each(|&[i, _]| d[i] = true);
+            d
+        };
+        if let Some(v) = (0..n).find(|&v| !duplicate[v] && !on_chain[v]) {
+            return Err(format!("status {} but point {v} is on no loop", rec.status.name()));
+        }
+        if !rec.paths.is_empty() {
+            return Err("manifold status with open paths".into());
+        }
+    }
+    if let Status::SculptingStuck { left_out } = &rec.status {
+        if left_out.is_empty() || left_out.iter().any(|&v| v >= n || on_chain[v]) {
+            return Err("left-out points must be off every loop".into());
+        }
+    }
+    if let Some((a, b)) = first_crossing(points, &rec.edges) {
+        return Err(format!("edges {a:?} and {b:?} cross"));
+    }
+    Ok(())
+}
+
+/// The first pair of edges that cross at a point interior to both, if any. Uses a uniform
+/// grid over the edges' bounding box, so it is fast on curve-like outputs.
+pub fn first_crossing(points: &[Point], edges: &[Edge]) -> Option<(Edge, Edge)> {
+    if edges.len() < 2 {
+        return None;
+    }
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in edges.iter().flatten().map(|&i| points[i]) {
+        for a in 0..2 {
+            lo[a] = lo[a].min(p[a]);
+            hi[a] = hi[a].max(p[a]);
+        }
+    }
+    let cells = (edges.len() as f64).sqrt().ceil().max(1.0);
+    let size = [0, 1].map(|a| ((hi[a] - lo[a]) / cells).max(f64::MIN_POSITIVE));
+    let cell = |p: Point, a: usize| (((p[a] - lo[a]) / size[a]) as i64).clamp(0, cells as i64 - 1);
+    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    for (k, &[i, j]) in edges.iter().enumerate() {
+        let (p, q) = (points[i], points[j]);
+        let (x0, x1) = (cell(p, 0).min(cell(q, 0)), cell(p, 0).max(cell(q, 0)));
+        let (y0, y1) = (cell(p, 1).min(cell(q, 1)), cell(p, 1).max(cell(q, 1)));
+        for x in x0..=x1 {
+            for y in y0..=y1 {
+                grid.entry((x, y)).or_default().push(k);
+            }
+        }
+    }
+    let mut keys: Vec<_> = grid.keys().copied().collect();
+    keys.sort_unstable();
+    for key in keys {
+        let bucket = &grid[&key];
+        for (s, &e) in bucket.iter().enumerate() {
+            for &f in &bucket[s + 1..] {
+                let ([a, b], [c, d]) = (edges[e], edges[f]);
+                if segments_cross(points[a], points[b], points[c], points[d]) {
+                    return Some((edges[e].min(edges[f]), edges[e].max(edges[f])));
+                }
+            }
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn detects_a_crossing_bow_tie() {
+        let pts = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
+        let rec = Reconstruction {
+            edges: vec![[0, 1], [0, 3], [1, 2], [2, 3]],
+            loops: vec![vec![0, 1, 2, 3]],
+            ..Reconstruction::default()
+        };
+        assert!(check_reconstruction(&pts, &rec).unwrap_err().contains("cross"));
+    }
+
+    #[test]
+    fn accepts_a_square() {
+        let pts = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let rec = crate::reconstruct(&pts, &crate::Options::default()).unwrap();
+        check_reconstruction(&pts, &rec).unwrap();
+    }
+}

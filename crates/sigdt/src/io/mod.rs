@@ -1,1 +1,12 @@
-//! Reading point files and writing results (placeholder, being written).
+//! Reading point files and writing reconstructions (formats in `docs/formats.md`).
+//!
+//! - [`points`]: readers for plain `x y` point files, Dey's `.gtn` files and `i j` edge files.
+//!   They stream line by line with bounded memory and report every problem as
+//!   [`Error::Parse`](crate::Error::Parse) naming the file and the 1-based line.
+//! - [`write`]: writers for edge lists, ordered loops, WKT, GeoJSON and SVG.
+
+pub mod points;
+pub mod write;
+
+pub use points::{parse_edges, parse_points, read_edges, read_points, PointFormat, MAX_LINE};
+pub use write::{svg, write_edges, write_reconstruction, OutputFormat};

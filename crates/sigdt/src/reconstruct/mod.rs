@@ -1,8 +1,13 @@
 //! Curve reconstruction: SIG-CONNECT2D and the machinery it shares with CONNECT2D.
 
 pub mod boundary;
+pub mod degenerate;
+pub mod extract;
 pub mod inflate;
+pub mod inflate_sculpt;
 pub mod method;
+pub mod pocket;
+pub mod queue;
 pub mod result;
 pub mod sculpt;
 pub mod sig_connect2d;

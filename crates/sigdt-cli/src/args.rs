@@ -1,0 +1,166 @@
+//! Command-line arguments: clap definitions and the help texts.
+//!
+//! Everything clap can check is checked here, so that a bad flag or value is a usage error
+//! (exit status 2) reported before any file is touched.
+
+use std::path::PathBuf;
+
+use clap::builder::{PossibleValuesParser, RangedU64ValueParser, TypedValueParser};
+use clap::error::ErrorKind;
+use clap::{Args, CommandFactory, Parser, Subcommand};
+use sigdt::io::OutputFormat;
+use sigdt::Method;
+
+/// The input formats, shown in `sigdt --help` and `sigdt <command> --help`.
+const INPUT_FORMATS: &str = "\
+Input (INPUT is a file, or '-' for standard input):
+  plain (.xy .p2d .txt .csv .pts)  one point per line: two numbers separated by spaces,
+                                   tabs or a comma ('1.5 2', '1.5,2'); '#' starts a
+                                   comment; blank lines are skipped; the first line may
+                                   be a header if none of its fields is a number ('x,y')
+  .gtn (Dey's CurveRecon)          a header 'N 2 0 0', then N lines 'index x y'
+  other extensions and stdin       the format is detected from the first line
+Points are numbered from 0 in file order; all indices in the output refer to them.
+NaN or infinite coordinates, and lines that are not two numbers, are errors.";
+
+/// The result statuses, shown in `sigdt --help` and `sigdt reconstruct --help`.
+const STATUSES: &str = "\
+Result status (printed with --verbose; also in geojson's properties):
+  polygon          one closed simple polygon through every distinct point
+  polygons         several disjoint closed simple polygons through every distinct point
+  sculpting-stuck  sculpting found no candidate while points were still inside: the loops
+                   are simple but miss those points (a warning goes to stderr)
+  collinear        all points on one line: the open path through them in line order
+  too-few-points   fewer than 3 distinct points: 2 give their edge, 0 or 1 give nothing
+Exact duplicate points get no edges: the lowest-index copy stands for all of them.
+All of these are results, not errors (exit status 0).";
+
+/// The output formats, shown in `sigdt reconstruct --help`.
+const OUTPUT_FORMATS: &str = "\
+Output formats (--format; default: from OUT's extension, else edges):
+  edges    one edge per line, 'i j' with i < j, sorted      (.edges .txt)
+  loops    one closed loop per line, its indices in order; open paths as 'path i j ...'
+                                                             (.loops)
+  wkt      POLYGON / MULTIPOLYGON / LINESTRING of the loops and paths   (.wkt)
+  geojson  one Feature: the geometry, with status and counts as properties
+                                                             (.geojson .json)
+  svg      a picture of the points, edges and filled loops   (.svg)";
+
+/// Exit statuses, shown in `sigdt --help`.
+const EXIT_STATUS: &str = "\
+Exit status: 0 on success (degenerate input included), 1 on an error (one line
+'sigdt: <message>' on stderr), 2 on a usage error. Output files are written to a temporary
+file and renamed into place, so a failed run never leaves a partial or truncated OUT.";
+
+/// Reconstruct curves (polygons) from unorganised 2D points with SIG-CONNECT2D.
+///
+/// SIG-CONNECT2D (Marin, Ohrhallinger, Wimmer: "SIGDT: 2D Curve Reconstruction", Pacific
+/// Graphics 2022) intersects the spheres-of-influence graph with the Delaunay triangulation,
+/// then inflates and sculpts its boundary into polygons that interpolate every point. It has
+/// no parameters.
+#[derive(Debug, Parser)]
+#[command(name = "sigdt", version, propagate_version = true)]
+#[command(after_help = format!("{INPUT_FORMATS}\n\n{STATUSES}\n\n{EXIT_STATUS}"))]
+#[command(arg_required_else_help = true)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Reconstruct the curve(s) through the points and write the edges (or loops, WKT,
+    /// GeoJSON, SVG).
+    #[command(after_help = format!("{INPUT_FORMATS}\n\n{STATUSES}\n\n{OUTPUT_FORMATS}"))]
+    Reconstruct(ReconstructArgs),
+    /// Write a proximity graph of the points, one edge 'i j' per line.
+    #[command(after_help = INPUT_FORMATS)]
+    Graph(GraphArgs),
+}
+
+/// `sigdt reconstruct`.
+#[derive(Debug, Args)]
+pub struct ReconstructArgs {
+    /// Point file, or '-' for standard input.
+    #[arg(value_name = "INPUT")]
+    pub input: PathBuf,
+    /// Write the result to OUT instead of standard output ('-' is standard output).
+    #[arg(short, long = "output", value_name = "OUT")]
+    pub output: Option<PathBuf>,
+    /// Output format [default: from OUT's extension, else edges].
+    #[arg(long, value_name = "FORMAT", value_parser = format_parser())]
+    pub format: Option<OutputFormat>,
+    /// Reconstruction method.
+    #[arg(long, value_name = "METHOD", value_parser = method_parser(),
+          default_value_t = Method::default())]
+    pub method: Method,
+    /// Do not give SIGDT leaves their shortest missing Delaunay edge before inflating
+    /// (leaf elimination, SIGDT2, is on by default).
+    #[arg(long)]
+    pub no_leaf_elimination: bool,
+    /// Print a summary (counts, status, time, per-stage statistics) to stderr.
+    #[arg(short, long)]
+    pub verbose: bool,
+}
+
+/// `sigdt graph`.
+#[derive(Debug, Args)]
+pub struct GraphArgs {
+    /// Point file, or '-' for standard input.
+    #[arg(value_name = "INPUT")]
+    pub input: PathBuf,
+    /// The graph: Delaunay triangulation, spheres-of-influence graph, SIGDT, SIGDT with
+    /// leaf elimination, Euclidean minimum spanning tree, or k nearest neighbours.
+    #[arg(long, value_name = "KIND",
+          value_parser = ["dt", "sig", "sigdt", "sigdt2", "emst", "knn"])]
+    pub kind: String,
+    /// Number of neighbours for --kind knn (required there, and only allowed there).
+    #[arg(short = 'k', value_name = "K", required_if_eq("kind", "knn"),
+          value_parser = RangedU64ValueParser::<usize>::new().range(1..))]
+    pub k: Option<usize>,
+    /// Write the edges to OUT instead of standard output ('-' is standard output).
+    #[arg(short, long = "output", value_name = "OUT")]
+    pub output: Option<PathBuf>,
+}
+
+/// Parses the command line; on a usage error prints it and exits with status 2, and on
+/// `--help` or `--version` prints the text and exits with status 0.
+pub fn parse() -> Cli {
+    let cli = Cli::parse();
+    if let Command::Graph(g) = &cli.command {
+        if g.k.is_some() && g.kind != "knn" {
+            let message = format!("-k is only used with --kind knn, not --kind {}", g.kind);
+            let mut cli = Cli::command();
+            cli.build();
+            match cli.find_subcommand_mut("graph") {
+                Some(graph) => graph.error(ErrorKind::ArgumentConflict, message).exit(),
+                None => cli.error(ErrorKind::ArgumentConflict, message).exit(),
+            }
+        }
+    }
+    cli
+}
+
+/// `--format` values, listed in the help and checked by clap.
+fn format_parser() -> impl TypedValueParser<Value = OutputFormat> {
+    let names = OutputFormat::ALL.iter().map(|f| f.name());
+    PossibleValuesParser::new(names).try_map(|s| s.parse::<OutputFormat>())
+}
+
+/// `--method` values, listed in the help and checked by clap.
+fn method_parser() -> impl TypedValueParser<Value = Method> {
+    let names = Method::ALL.iter().map(|m| m.name());
+    PossibleValuesParser::new(names).try_map(|s| s.parse::<Method>())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn definitions_are_consistent() {
+        Cli::command().debug_assert();
+    }
+}

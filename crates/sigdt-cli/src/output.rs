@@ -1,0 +1,139 @@
+//! Where results go: standard output, or a file replaced atomically.
+//!
+//! A file is written to a temporary file in its own directory, flushed and synced, then
+//! renamed over the target, so a failed run never leaves it half-written or truncated, and
+//! an existing file stays untouched unless the whole run succeeds. A symbolic link is written
+//! through, and an existing file that is not a regular file (`/dev/null`, a named pipe) is
+//! written in place.
+
+use std::fs;
+use std::io::{self, BufWriter, ErrorKind, Write};
+use std::path::{Path, PathBuf};
+
+use anyhow::{anyhow, bail, Result};
+
+/// The destination of a command's data.
+#[derive(Debug)]
+pub enum Output {
+    /// Standard output; a reader that goes away early (broken pipe) is not an error.
+    Stdout,
+    /// A regular file, replaced atomically once everything is written.
+    File {
+        /// The file to replace: the path as given, or the target of a symbolic link.
+        path: PathBuf,
+        /// The directory that holds it, where the temporary file goes.
+        dir: PathBuf,
+    },
+    /// An existing file that is not a regular file (`/dev/null`, a named pipe): written in
+    /// place, since replacing it would be wrong.
+    Special {
+        /// The path as given.
+        path: PathBuf,
+    },
+}
+
+impl Output {
+    /// Checks `out` (`None` or `-` mean standard output) before any work is done: its
+    /// directory must exist, it must not be a directory, and it must not be `input` (nothing
+    /// the user gave may be overwritten).
+    pub fn new(out: Option<&Path>, input: &Path) -> Result<Output> {
+        let Some(given) = out.filter(|p| !is_dash(p)) else {
+            return Ok(Output::Stdout);
+        };
+        let shown = given.display();
+        if given.file_name().is_none() {
+            bail!("{shown}: output must be a file name");
+        }
+        if !is_dash(input) && same_file(given, input) {
+            bail!("{shown}: output is the input file; refusing to overwrite it");
+        }
+        // Write through a symbolic link rather than replace it.
+        let path = match fs::symlink_metadata(given) {
+            Ok(meta) if meta.file_type().is_symlink() => {
+                fs::canonicalize(given).unwrap_or_else(|_| given.to_path_buf())
+            }
+            _ => given.to_path_buf(),
+        };
+        let dir = match path.parent() {
+            Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        if !dir.is_dir() {
+            bail!("{shown}: output directory '{}' does not exist", dir.display());
+        }
+        match fs::metadata(&path) {
+            Ok(meta) if meta.is_dir() => bail!("{shown}: output is a directory"),
+            Ok(meta) if !meta.is_file() => Ok(Output::Special { path }),
+            _ => Ok(Output::File { path, dir }),
+        }
+    }
+
+    /// Runs `write` on the destination. On standard output a broken pipe counts as success;
+    /// a file is only replaced if `write` and every step after it succeed.
+    pub fn write(&self, write: impl FnOnce(&mut dyn Write) -> io::Result<()>) -> Result<()> {
+        match self {
+            Output::Stdout => {
+                let mut w = BufWriter::new(io::stdout().lock());
+                match write(&mut w).and_then(|()| w.flush()) {
+                    Err(e) if e.kind() == ErrorKind::BrokenPipe => Ok(()),
+                    Err(e) => Err(anyhow!("<stdout>: {e}")),
+                    Ok(()) => Ok(()),
+                }
+            }
+            Output::File { path, dir } => write_atomically(path, dir, write),
+            Output::Special { path } => {
+                let shown = path.display();
+                let file = fs::OpenOptions::new()
+                    .write(true)
+                    .open(path)
+                    .map_err(|e| anyhow!("{shown}: {e}"))?;
+                let mut w = BufWriter::new(file);
+                write(&mut w).and_then(|()| w.flush()).map_err(|e| anyhow!("{shown}: {e}"))
+            }
+        }
+    }
+}
+
+/// Writes to a temporary file in `dir`, then renames it over `path`.
+fn write_atomically(
+    path: &Path,
+    dir: &Path,
+    write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+) -> Result<()> {
+    let shown = path.display();
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(".sigdt-").suffix(".tmp");
+    #[cfg(unix)]
+    {
+        // What a plain create would give (0o666 less the umask), not tempfile's 0o600.
+        use std::os::unix::fs::PermissionsExt;
+        builder.permissions(fs::Permissions::from_mode(0o666));
+    }
+    let mut tmp = builder.tempfile_in(dir).map_err(|e| {
+        anyhow!("{shown}: cannot create a temporary file in '{}': {e}", dir.display())
+    })?;
+    if let Ok(meta) = fs::metadata(path) {
+        // Replacing an existing file keeps its permissions.
+        let _ = tmp.as_file().set_permissions(meta.permissions());
+    }
+    let mut w = BufWriter::new(tmp.as_file_mut());
+    write(&mut w).and_then(|()| w.flush()).map_err(|e| anyhow!("{shown}: cannot write: {e}"))?;
+    drop(w);
+    tmp.as_file().sync_all().map_err(|e| anyhow!("{shown}: cannot write: {e}"))?;
+    // The temporary file is removed when `persist` fails.
+    tmp.persist(path).map_err(|e| anyhow!("{shown}: cannot replace: {}", e.error))?;
+    Ok(())
+}
+
+/// Whether `p` is `-`, meaning standard input or output.
+pub fn is_dash(p: &Path) -> bool {
+    p.as_os_str() == "-"
+}
+
+/// Whether `a` and `b` name the same existing file (through `..`, symlinks and the like).
+fn same_file(a: &Path, b: &Path) -> bool {
+    match (fs::canonicalize(a), fs::canonicalize(b)) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    }
+}

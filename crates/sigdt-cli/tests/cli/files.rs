@@ -1,0 +1,135 @@
+//! Output files: extension inference, atomic replacement, refusing to overwrite the input,
+//! special files, symbolic links and broken pipes.
+
+use super::*;
+
+#[test]
+fn output_file_and_extension_inference() {
+    let dir = tempdir();
+    write_points(dir.path(), "square.xy", &square());
+    let read = |name: &str| fs::read_to_string(dir.path().join(name)).unwrap();
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "out.svg"], None).ok().stdout_is("");
+    assert!(read("out.svg").starts_with("<svg") || read("out.svg").starts_with("<?xml"));
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "--output", "out.wkt"], None).ok();
+    assert!(read("out.wkt").starts_with("POLYGON (("), "{}", read("out.wkt"));
+    // An explicit --format wins over the extension; an unknown extension means edges.
+    let args = ["reconstruct", "square.xy", "-o", "out.svg", "--format", "edges"];
+    sigdt_in(dir.path(), &args, None).ok();
+    assert_eq!(read("out.svg"), SQUARE_EDGES);
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "out.result"], None).ok();
+    assert_eq!(read("out.result"), SQUARE_EDGES);
+    // `-o -` is stdout.
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "-"], None)
+        .ok()
+        .stdout_is(SQUARE_EDGES);
+    assert_no_temporary_files(dir.path());
+}
+
+#[test]
+fn output_in_missing_directory() {
+    let dir = tempdir();
+    write_points(dir.path(), "square.xy", &square());
+    let args = ["reconstruct", "square.xy", "-o", "missing/out.edges"];
+    sigdt_in(dir.path(), &args, None).error(&["missing"]);
+    assert!(!dir.path().join("missing").exists());
+    fs::create_dir(dir.path().join("adir")).unwrap();
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "adir"], None).error(&["adir"]);
+}
+
+#[test]
+fn output_equal_to_input_is_refused() {
+    let dir = tempdir();
+    let input = write_points(dir.path(), "square.xy", &square());
+    let before = fs::read(&input).unwrap();
+    fs::create_dir(dir.path().join("sub")).unwrap();
+    let input_abs = input.to_str().unwrap().to_string();
+    for out in ["square.xy", "./sub/../square.xy", input_abs.as_str()] {
+        sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", out], None).error(&["input"]);
+        sigdt_in(dir.path(), &["graph", "square.xy", "--kind", "dt", "-o", out], None)
+            .error(&["input"]);
+        assert_eq!(fs::read(&input).unwrap(), before, "input changed (-o {out})");
+    }
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::symlink(&input, dir.path().join("link.xy")).unwrap();
+        sigdt_in(dir.path(), &["reconstruct", "link.xy", "-o", "square.xy"], None)
+            .error(&["input"]);
+        sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "link.xy"], None)
+            .error(&["input"]);
+        assert_eq!(fs::read(&input).unwrap(), before);
+    }
+    assert_no_temporary_files(dir.path());
+}
+
+#[test]
+fn failed_run_leaves_existing_output_untouched() {
+    let dir = tempdir();
+    fs::write(dir.path().join("bad.xy"), "0 0\n1 0\n1 oops\n").unwrap();
+    let out = dir.path().join("out.edges");
+    let precious = b"precious\ncontent\n";
+    fs::write(&out, precious).unwrap();
+    sigdt_in(dir.path(), &["reconstruct", "bad.xy", "-o", "out.edges"], None).error(&["bad.xy:3:"]);
+    sigdt_in(dir.path(), &["reconstruct", "nope.xy", "-o", "out.edges"], None).error(&["nope.xy"]);
+    sigdt_in(dir.path(), &["graph", "bad.xy", "--kind", "dt", "-o", "out.edges"], None)
+        .error(&["bad.xy"]);
+    sigdt_in(dir.path(), &["reconstruct", "-", "-o", "out.edges"], Some("1 nan\n"))
+        .error(&["<stdin>:1:"]);
+    assert_eq!(fs::read(&out).unwrap(), precious, "a failed run changed the existing output");
+    assert_no_temporary_files(dir.path());
+    // A successful run replaces it.
+    write_points(dir.path(), "square.xy", &square());
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "out.edges"], None).ok();
+    assert_eq!(fs::read_to_string(&out).unwrap(), SQUARE_EDGES);
+    assert_no_temporary_files(dir.path());
+}
+
+#[test]
+fn broken_pipe_is_quiet_success() {
+    let dir = tempdir();
+    write_points(dir.path(), "big.xy", &circle(20_000, 100.0));
+    for read_first_line in [false, true] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_sigdt"))
+            .args(["reconstruct", "big.xy"])
+            .current_dir(dir.path())
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("cannot start sigdt");
+        let stdout = child.stdout.take().expect("stdout is piped");
+        if read_first_line {
+            let mut line = String::new();
+            BufReader::new(stdout).read_line(&mut line).unwrap();
+            assert_eq!(line, "0 1\n");
+        } else {
+            drop(stdout);
+        }
+        let out = child.wait_with_output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            out.status.success() && stderr.is_empty(),
+            "closed pipe (after a line: {read_first_line}): status {:?}\n--- stderr ---\n{stderr}",
+            out.status
+        );
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn special_files_and_symlinks_as_output() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = tempdir();
+    write_points(dir.path(), "square.xy", &square());
+    // `/dev/null` is written in place, never replaced by a regular file.
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "/dev/null"], None).ok();
+    let meta = fs::metadata("/dev/null").unwrap();
+    assert!(meta.file_type().is_char_device(), "/dev/null is no longer a device");
+    // A symbolic link is written through: the link stays, its target gets the output.
+    fs::write(dir.path().join("target.edges"), "old\n").unwrap();
+    std::os::unix::fs::symlink("target.edges", dir.path().join("link.edges")).unwrap();
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "link.edges"], None).ok();
+    let link = fs::symlink_metadata(dir.path().join("link.edges")).unwrap();
+    assert!(link.file_type().is_symlink(), "the link was replaced");
+    assert_eq!(fs::read_to_string(dir.path().join("target.edges")).unwrap(), SQUARE_EDGES);
+    assert_no_temporary_files(dir.path());
+}

@@ -1,0 +1,119 @@
+//! Edge sets over a triangulation and union-find: the plumbing every graph algorithm shares.
+use crate::delaunay::{Triangulation, EMPTY};
+
+/// A set of Delaunay edges, one flag per half-edge (both halves of an edge always agree).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct EdgeMask {
+    on: Vec<bool>,
+}
+
+impl EdgeMask {
+    /// The empty set for `dt`.
+    pub fn new(dt: &Triangulation) -> EdgeMask {
+        EdgeMask { on: vec![false; dt.num_halfedges()] }
+    }
+
+    /// Whether the edge of half-edge `h` is in the set.
+    #[inline]
+    pub fn contains(&self, h: u32) -> bool {
+        self.on[h as usize]
+    }
+
+    /// Puts the edge of `h` in (`true`) or out of (`false`) the set.
+    #[inline]
+    pub fn set(&mut self, dt: &Triangulation, h: u32, value: bool) {
+        self.on[h as usize] = value;
+        let t = dt.twin(h);
+        if t != EMPTY {
+            self.on[t as usize] = value;
+        }
+    }
+
+    /// Number of edges in the set.
+    pub fn len(&self, dt: &Triangulation) -> usize {
+        dt.edge_halfedges().filter(|&h| self.contains(h)).count()
+    }
+
+    /// Whether the set is empty.
+    pub fn is_empty(&self) -> bool {
+        !self.on.contains(&true)
+    }
+
+    /// Number of edges of the set at vertex `v`.
+    pub fn degree(&self, dt: &Triangulation, v: u32) -> usize {
+        dt.incident(v).filter(|&h| self.contains(h)).count()
+    }
+
+    /// The edges as sorted input-index pairs.
+    pub fn edges(&self, dt: &Triangulation) -> Vec<crate::Edge> {
+        dt.to_input_edges(
+            dt.edge_halfedges().filter(|&h| self.contains(h)).map(|h| [dt.origin(h), dt.dest(h)]),
+        )
+    }
+}
+
+/// Disjoint sets over `0..n` with path halving and union by size.
+#[derive(Debug, Clone)]
+pub struct UnionFind {
+    parent: Vec<u32>,
+    size: Vec<u32>,
+}
+
+impl UnionFind {
+    /// `n` singleton sets.
+    pub fn new(n: usize) -> UnionFind {
+        UnionFind { parent: (0..n as u32).collect(), size: vec![1; n] }
+    }
+
+    /// The representative of `x`'s set.
+    #[inline]
+    pub fn find(&mut self, mut x: u32) -> u32 {
+        while self.parent[x as usize] != x {
+            let grandparent = self.parent[self.parent[x as usize] as usize];
+            self.parent[x as usize] = grandparent;
+            x = grandparent;
+        }
+        x
+    }
+
+    /// Merges the sets of `a` and `b`; returns false if they were already one set.
+    #[inline]
+    pub fn union(&mut self, a: u32, b: u32) -> bool {
+        let (mut a, mut b) = (self.find(a), self.find(b));
+        if a == b {
+            return false;
+        }
+        if self.size[a as usize] < self.size[b as usize] {
+            std::mem::swap(&mut a, &mut b);
+        }
+        self.parent[b as usize] = a;
+        self.size[a as usize] += self.size[b as usize];
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn union_find_merges() {
+        let mut uf = UnionFind::new(5);
+        assert!(uf.union(0, 1));
+        assert!(uf.union(3, 4));
+        assert!(!uf.union(1, 0));
+        assert_eq!(uf.find(0), uf.find(1));
+        assert_ne!(uf.find(1), uf.find(3));
+    }
+
+    #[test]
+    fn mask_sets_both_halves() {
+        let dt = Triangulation::new(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).unwrap();
+        let mut mask = EdgeMask::new(&dt);
+        for h in 0..dt.num_halfedges() as u32 {
+            mask.set(&dt, h, true);
+        }
+        assert_eq!(mask.len(&dt), 5);
+        assert_eq!(mask.edges(&dt).len(), 5);
+    }
+}

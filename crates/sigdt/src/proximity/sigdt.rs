@@ -1,0 +1,97 @@
+//! SIGDT: the spheres-of-influence graph restricted to Delaunay edges.
+//!
+//! A Delaunay edge `uv` is kept iff `|uv| <= r(u) + r(v)`, where `r(x)` is the distance from
+//! `x` to its nearest neighbour (the closed SIG rule of [Tou88]: the two disks of influence
+//! touch or overlap). Ties are kept with a relative slack of 1e-12, so that exactly touching
+//! disks (regular spacing) stay in despite rounding (ALGORITHMS.md §1.2, a [D] decision).
+//!
+//! # Guarantee
+//! If the points sample a smooth closed curve with ρ < 1 and non-uniformity u < 2, SIGDT
+//! contains every edge between consecutive samples ([MOW22], Theorem 1). It may contain
+//! extra edges inside and outside the curve; inflating and sculpting remove them.
+//!
+//! # Complexity
+//! O(n) time and memory given the triangulation ([MOW22] Algorithm 1, l. 3–10).
+//!
+//! # References
+//! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//! - [Tou88] G. T. Toussaint. A graph-theoretical primal sketch. 1988.
+use super::nearest::nearest_neighbour_distances;
+use crate::delaunay::{Shape, Triangulation};
+use crate::geometry::distance;
+use crate::graph::EdgeMask;
+use crate::Edge;
+
+/// Relative slack of the SIG test: `|uv| <= (r(u) + r(v)) · (1 + TIE_SLACK)`.
+pub const TIE_SLACK: f64 = 1e-12;
+
+/// Whether an edge of length `len` between points with nearest-neighbour distances `ru`,
+/// `rv` is a (closed) SIG edge.
+#[inline]
+pub fn is_sig_edge(len: f64, ru: f64, rv: f64) -> bool {
+    len <= (ru + rv) * (1.0 + TIE_SLACK)
+}
+
+/// The SIGDT edges of a proper triangulation as an edge mask.
+pub fn sigdt_mask(dt: &Triangulation) -> EdgeMask {
+    let r = nearest_neighbour_distances(dt);
+    let mut mask = EdgeMask::new(dt);
+    for h in dt.edge_halfedges() {
+        let (a, b) = (dt.origin(h), dt.dest(h));
+        if is_sig_edge(dt.length(h), r[a as usize], r[b as usize]) {
+            mask.set(dt, h, true);
+        }
+    }
+    mask
+}
+
+/// The SIGDT edges as sorted input-index pairs; for collinear input, the SIG-conforming
+/// segments between consecutive points.
+pub fn sigdt(dt: &Triangulation) -> Vec<Edge> {
+    match dt.shape() {
+        Shape::Proper => sigdt_mask(dt).edges(dt),
+        _ => {
+            let r = nearest_neighbour_distances(dt);
+            let keep = dt.line_edges().filter(|&[a, b]| {
+                is_sig_edge(distance(dt.point(a), dt.point(b)), r[a as usize], r[b as usize])
+            });
+            dt.to_input_edges(keep)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn square_keeps_sides_and_diagonal() {
+        // Diagonal √2 <= 1 + 1: the diagonal is a SIG edge too.
+        let dt = Triangulation::new(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).unwrap();
+        assert_eq!(sigdt(&dt).len(), 5);
+    }
+
+    #[test]
+    fn regular_polygon_with_centre_keeps_spokes() {
+        // 12-gon of radius 1: side 2·sin(15°) ≈ 0.518. The centre's nearest neighbour is at
+        // distance 1, so every spoke (1 <= 1 + 0.518) is a SIG edge; the Delaunay
+        // triangulation is the fan, so SIGDT = 12 sides + 12 spokes.
+        let mut pts: Vec<[f64; 2]> = (0..12)
+            .map(|i| {
+                let a = i as f64 * std::f64::consts::TAU / 12.0;
+                [a.cos(), a.sin()]
+            })
+            .collect();
+        pts.push([0.0, 0.0]);
+        let dt = Triangulation::new(&pts).unwrap();
+        let edges = sigdt(&dt);
+        assert_eq!(edges.len(), 24);
+        assert_eq!(edges.iter().filter(|e| e.contains(&12)).count(), 12);
+    }
+
+    #[test]
+    fn collinear_gap_is_cut() {
+        let dt = Triangulation::new(&[[0.0, 0.0], [1.0, 0.0], [11.0, 0.0], [12.0, 0.0]]).unwrap();
+        assert_eq!(sigdt(&dt), vec![[0, 1], [2, 3]]);
+    }
+}

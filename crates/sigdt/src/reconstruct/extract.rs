@@ -1,0 +1,57 @@
+//! Reading the result off the boundary: ordered loops and sorted edges.
+//!
+//! Every boundary half-edge with interior on its left is followed from vertex to vertex; on a
+//! manifold boundary each boundary vertex has exactly one, so the boundary splits into
+//! loops running counter-clockwise around the interior. Each loop starts at its smallest
+//! input index; loops are sorted by it.
+//!
+//! # Complexity
+//! O(n).
+use super::boundary::Boundary;
+use crate::delaunay::EMPTY;
+use crate::Edge;
+
+/// The loops of the boundary, as input indices.
+pub fn loops(bd: &Boundary<'_>) -> Vec<Vec<usize>> {
+    let dt = bd.dt;
+    let mut successor = vec![EMPTY; dt.num_vertices()];
+    for h in 0..dt.num_halfedges() as u32 {
+        if bd.edges.contains(h) && bd.left_is_in(h) {
+            debug_assert_eq!(successor[dt.origin(h) as usize], EMPTY, "non-manifold boundary");
+            successor[dt.origin(h) as usize] = dt.dest(h);
+        }
+    }
+    let mut loops = Vec::new();
+    let mut seen = vec![false; dt.num_vertices()];
+    for start in 0..dt.num_vertices() as u32 {
+        if seen[start as usize] || successor[start as usize] == EMPTY {
+            continue;
+        }
+        let mut cycle = Vec::new();
+        let mut v = start;
+        // Bounded walk: a broken boundary can never make this loop forever.
+        while v != EMPTY && !seen[v as usize] {
+            seen[v as usize] = true;
+            cycle.push(dt.input_index(v));
+            v = successor[v as usize];
+        }
+        let smallest = (0..cycle.len()).min_by_key(|&i| cycle[i]).unwrap_or(0);
+        cycle.rotate_left(smallest);
+        loops.push(cycle);
+    }
+    loops.sort_unstable();
+    loops
+}
+
+/// The edges of closed loops, sorted, `[i, j]` with `i < j`.
+pub fn loop_edges(loops: &[Vec<usize>]) -> Vec<Edge> {
+    let mut edges: Vec<Edge> = loops
+        .iter()
+        .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
+        .filter(|(a, b)| a != b)
+        .map(|(a, b)| [a.min(b), a.max(b)])
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    edges
+}

@@ -1,0 +1,41 @@
+//! The CONNECT2D machinery from a given initial graph: boundary, inflating, sculpting,
+//! extraction (ALGORITHMS.md §2.2–2.7). SIG-CONNECT2D starts it from SIGDT; CONNECT2D from
+//! its own graph BC₀.
+use super::boundary::Boundary;
+use super::extract::{loop_edges, loops};
+use super::inflate::inflate;
+use super::result::{Reconstruction, Stats, Status};
+use super::sculpt::sculpt;
+use crate::delaunay::Triangulation;
+use crate::graph::EdgeMask;
+
+/// Reconstruction of a proper triangulation from initial graph `graph`; `stats` already
+/// carries the graph-building counts.
+pub fn inflate_and_sculpt(
+    dt: &Triangulation,
+    graph: &EdgeMask,
+    mut stats: Stats,
+) -> Reconstruction {
+    let mut bd = Boundary::from_graph(dt, graph);
+    inflate(&mut bd, &mut stats);
+    sculpt(&mut bd, &mut stats);
+    let loops = loops(&bd);
+    let status = if bd.interior > 0 {
+        let mut left_out: Vec<usize> =
+            bd.interior_vertices().into_iter().map(|v| dt.input_index(v)).collect();
+        left_out.sort_unstable();
+        Status::SculptingStuck { left_out }
+    } else if loops.len() == 1 {
+        Status::Polygon
+    } else {
+        Status::Polygons
+    };
+    Reconstruction {
+        edges: loop_edges(&loops),
+        loops,
+        paths: Vec::new(),
+        status,
+        duplicates: dt.duplicates().to_vec(),
+        stats,
+    }
+}
