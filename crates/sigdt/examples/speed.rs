@@ -18,7 +18,7 @@
 //! - `total/Delaunay`: ratio of the two medians: how much the pipeline adds to the Delaunay step.
 //! - `ns/point (total)`: `total ms` per input point.
 //! - `peak MiB`, `peak bytes/point`: peak memory of one `reconstruct` call beyond what the
-//!   process held just before it (so the input points are excluded); `n/a` off Linux.
+//!   process held just before it (so the input points are excluded).
 //! - `exact`: whether the reconstructed edges equal the ground-truth cycle.
 //!
 //! Timing: after one warm-up run of each, the two calls alternate `R` times (so machine noise
@@ -26,26 +26,22 @@
 //! makes each measurement last at least 0.3 s, clamped to `3..=50`; `--reps R` fixes it. Every
 //! run is single-threaded.
 //!
-//! Memory: the growth of resident memory (`VmHWM` after the call minus `VmRSS` before it,
-//! with the high-water mark reset through `/proc/self/clear_refs`), measured in a fresh child
-//! process that receives the points over a pipe, so memory freed by earlier runs cannot hide
-//! any. It counts touched pages, with a granularity of about a page (4 KiB) to a few hundred
-//! KiB, so small `n` are noisy. A counting `#[global_allocator]` would count heap bytes
-//! exactly, but `GlobalAlloc` is an unsafe trait and the workspace forbids `unsafe_code`.
+//! Memory: exact heap bytes, counted by a pass-through `#[global_allocator]`: the peak
+//! during one `reconstruct` call minus what was allocated just before it (the result
+//! returned by the call is included).
 use sigdt::curves::{random_closed_curve, spiral_band, Sample};
 use sigdt::{Options, Point, Triangulation};
+use std::alloc::{GlobalAlloc, Layout, System};
 use std::error::Error;
 use std::hint::black_box;
-use std::io::{BufWriter, Read, Write};
-use std::process::{Command, Stdio};
+use std::io::Write;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 type Res<T> = Result<T, Box<dyn Error>>;
 /// Makes the benchmark input with `n` points.
 type Sampler = fn(usize) -> Sample;
 
-/// First argument that makes the binary act as the memory probe.
-const CHILD: &str = "--peak-memory-child";
 /// Each measurement should last at least this long (seconds), within the repetition bounds.
 const MIN_SECONDS: f64 = 0.3;
 const MIN_REPS: usize = 3;
@@ -54,9 +50,6 @@ const USAGE: &str = "usage: speed [--sizes N,N,...] [--reps R]";
 
 fn main() -> Res<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if args.first().map(String::as_str) == Some(CHILD) {
-        return peak_memory_child();
-    }
     let (sizes, reps) = parse_args(&args)?;
     let threads = std::thread::available_parallelism().map_or(1, |p| p.get());
     let (arch, os) = (std::env::consts::ARCH, std::env::consts::OS);
@@ -151,69 +144,58 @@ fn median(values: &mut [f64]) -> f64 {
     }
 }
 
-/// Peak memory of one `reconstruct` run on `points`, in bytes, measured by a fresh child
-/// process (this binary with [`CHILD`]); `None` where `/proc` is not available.
+/// Peak heap bytes of one `reconstruct` run on `points`, beyond what was allocated before
+/// the call (the input points are excluded; the returned result is included).
 fn peak_memory(points: &[Point]) -> Res<Option<u64>> {
-    if !std::path::Path::new("/proc/self/status").exists() {
-        return Ok(None);
-    }
-    let mut child = Command::new(std::env::current_exe()?)
-        .arg(CHILD)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()?;
-    {
-        let mut pipe = BufWriter::new(child.stdin.take().ok_or("no pipe to the child")?);
-        pipe.write_all(&(points.len() as u64).to_le_bytes())?;
-        for p in points {
-            pipe.write_all(&p[0].to_le_bytes())?;
-            pipe.write_all(&p[1].to_le_bytes())?;
-        }
-        pipe.flush()?;
-    } // closes the pipe
-    let output = child.wait_with_output()?;
-    if !output.status.success() {
-        return Err(format!("memory probe failed: {}", output.status).into());
-    }
-    Ok(String::from_utf8(output.stdout)?.trim().parse().ok())
-}
-
-/// The child side of [`peak_memory`]: reads the points from stdin into a vector of exactly
-/// the right size, runs `reconstruct` once and prints the peak growth in bytes (or `n/a`).
-fn peak_memory_child() -> Res<()> {
-    let mut input = std::io::stdin().lock();
-    let mut word = [0u8; 8];
-    input.read_exact(&mut word)?;
-    let n = usize::try_from(u64::from_le_bytes(word))?;
-    let mut points: Vec<Point> = Vec::with_capacity(n);
-    let mut pair = [0u8; 16];
-    for _ in 0..n {
-        input.read_exact(&mut pair)?;
-        let (x, y) = pair.split_at(8);
-        points.push([f64::from_le_bytes(x.try_into()?), f64::from_le_bytes(y.try_into()?)]);
-    }
-    drop(input);
     let options = Options::default();
-    let baseline = status_bytes("VmRSS:")?;
-    // Writing 5 resets the high-water mark VmHWM to the current RSS (Linux 4.0 and later).
-    if std::fs::write("/proc/self/clear_refs", "5").is_err() {
-        println!("n/a");
-        return Ok(());
-    }
-    let rec = black_box(sigdt::reconstruct(&points, &options)?);
-    let peak = status_bytes("VmHWM:")?;
+    let baseline = CURRENT.load(Ordering::SeqCst);
+    PEAK.store(baseline, Ordering::SeqCst);
+    let rec = black_box(sigdt::reconstruct(points, &options)?);
+    let peak = PEAK.load(Ordering::SeqCst);
     drop(rec);
-    println!("{}", peak.saturating_sub(baseline));
-    Ok(())
+    Ok(Some((peak - baseline) as u64))
 }
 
-/// A `kB` field of `/proc/self/status`, in bytes.
-fn status_bytes(field: &str) -> Res<u64> {
-    let status = std::fs::read_to_string("/proc/self/status")?;
-    let line = status.lines().find(|l| l.starts_with(field)).ok_or("field not found")?;
-    let kib: u64 = line[field.len()..].trim().trim_end_matches("kB").trim().parse()?;
-    Ok(kib * 1024)
+/// Heap bytes allocated now, and the most since the last reset.
+static CURRENT: AtomicUsize = AtomicUsize::new(0);
+static PEAK: AtomicUsize = AtomicUsize::new(0);
+
+/// The system allocator, counting bytes in [`CURRENT`] and [`PEAK`].
+struct Counting;
+
+// The only unsafe code in the workspace: a pass-through allocator for this benchmark.
+#[allow(unsafe_code)]
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let p = unsafe { System.alloc(layout) };
+        if !p.is_null() {
+            grow(layout.size());
+        }
+        p
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) };
+        CURRENT.fetch_sub(layout.size(), Ordering::SeqCst);
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        let p = unsafe { System.realloc(ptr, layout, new_size) };
+        if !p.is_null() {
+            CURRENT.fetch_sub(layout.size(), Ordering::SeqCst);
+            grow(new_size);
+        }
+        p
+    }
 }
+
+fn grow(bytes: usize) {
+    let now = CURRENT.fetch_add(bytes, Ordering::SeqCst) + bytes;
+    PEAK.fetch_max(now, Ordering::SeqCst);
+}
+
+#[global_allocator]
+static ALLOCATOR: Counting = Counting;
 
 fn parse_args(args: &[String]) -> Res<(Vec<usize>, Option<usize>)> {
     let mut sizes = vec![1_000, 10_000, 100_000, 1_000_000];

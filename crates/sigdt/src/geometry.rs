@@ -12,9 +12,15 @@ pub type Point = [f64; 2];
 /// range, so the squares neither overflow nor underflow.
 #[inline]
 pub fn distance(p: Point, q: Point) -> f64 {
+    squared_distance(p, q).sqrt()
+}
+
+/// Squared Euclidean distance `dx² + dy²` (same range caveat as [`distance`]).
+#[inline]
+pub fn squared_distance(p: Point, q: Point) -> f64 {
     let dx = p[0] - q[0];
     let dy = p[1] - q[1];
-    (dx * dx + dy * dy).sqrt()
+    dx * dx + dy * dy
 }
 
 /// Exact orientation of `r` relative to the directed line `p → q`: positive if `r` lies to

@@ -5,12 +5,13 @@ use crate::delaunay::{Triangulation, EMPTY};
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct EdgeMask {
     on: Vec<bool>,
+    count: usize,
 }
 
 impl EdgeMask {
     /// The empty set for `dt`.
     pub fn new(dt: &Triangulation) -> EdgeMask {
-        EdgeMask { on: vec![false; dt.num_halfedges()] }
+        EdgeMask { on: vec![false; dt.num_halfedges()], count: 0 }
     }
 
     /// Whether the edge of half-edge `h` is in the set.
@@ -22,6 +23,9 @@ impl EdgeMask {
     /// Puts the edge of `h` in (`true`) or out of (`false`) the set.
     #[inline]
     pub fn set(&mut self, dt: &Triangulation, h: u32, value: bool) {
+        if self.on[h as usize] != value {
+            self.count = if value { self.count + 1 } else { self.count - 1 };
+        }
         self.on[h as usize] = value;
         let t = dt.twin(h);
         if t != EMPTY {
@@ -30,13 +34,23 @@ impl EdgeMask {
     }
 
     /// Number of edges in the set.
-    pub fn len(&self, dt: &Triangulation) -> usize {
-        dt.edge_halfedges().filter(|&h| self.contains(h)).count()
+    pub fn len(&self) -> usize {
+        self.count
     }
 
     /// Whether the set is empty.
     pub fn is_empty(&self) -> bool {
-        !self.on.contains(&true)
+        self.count == 0
+    }
+
+    /// Degree of every vertex in the set, in one pass over the edges.
+    pub fn degrees(&self, dt: &Triangulation) -> Vec<u32> {
+        let mut degree = vec![0; dt.num_vertices()];
+        for h in dt.edge_halfedges().filter(|&h| self.contains(h)) {
+            degree[dt.origin(h) as usize] += 1;
+            degree[dt.dest(h) as usize] += 1;
+        }
+        degree
     }
 
     /// Number of edges of the set at vertex `v`.
@@ -113,7 +127,7 @@ mod tests {
         for h in 0..dt.num_halfedges() as u32 {
             mask.set(&dt, h, true);
         }
-        assert_eq!(mask.len(&dt), 5);
+        assert_eq!(mask.len(), 5);
         assert_eq!(mask.edges(&dt).len(), 5);
     }
 }

@@ -16,6 +16,8 @@
 //! Module graph: `geometry ← delaunay ← proximity ← reconstruct`, with `io` and `curves`
 //! beside them.
 
+#![forbid(unsafe_code)]
+
 pub mod curves;
 pub mod delaunay;
 pub mod error;

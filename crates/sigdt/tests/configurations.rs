@@ -80,11 +80,12 @@ fn dangling_path_is_non_manifold_and_inflates_to_the_polygon() {
     let pts = circle(9, [0.0, 0.0], 1.0);
     let dt = Triangulation::new(&pts).unwrap();
     let path: Vec<[usize; 2]> = (0..8).map(|i| [i, i + 1]).collect();
-    let mut bd = Boundary::from_graph(&dt, &mask(&dt, &path));
+    let g = mask(&dt, &path);
+    let mut bd = Boundary::from_graph(&dt, &g);
     assert!(bd.inside.iter().all(|&i| !i));
     assert_eq!(bd.non_manifold, 9);
     let mut stats = Stats::default();
-    inflate(&mut bd, &mut stats);
+    inflate(&mut bd, &g, &mut stats);
     assert_eq!(bd.non_manifold, 0);
     // The whole convex 9-gon fills, partly by triangles taken and partly as enclosed pockets.
     assert!(bd.inside.iter().all(|&i| i), "{stats:?}");
@@ -111,7 +112,7 @@ fn figure_6_inflating_resolves_a_pinched_vertex() {
     assert_eq!(class_of(&bd, &dt, 0), VertexClass::NonManifold, "pinched: four transitions");
     assert_eq!(bd.non_manifold, 1);
     let mut stats = Stats::default();
-    inflate(&mut bd, &mut stats);
+    inflate(&mut bd, &g, &mut stats);
     assert_eq!(stats.inflated_triangles, 1);
     assert_eq!(class_of(&bd, &dt, 0), VertexClass::Manifold);
     assert_eq!(bd.edges.edges(&dt), vec![[0, 1], [0, 3], [1, 2], [2, 4], [3, 4]]);
@@ -125,10 +126,11 @@ fn figure_7_sculpting_exposes_the_centre() {
     pts.push([0.0, 0.0]);
     let dt = Triangulation::new(&pts).unwrap();
     // SIGDT here is the fan: 12 sides and 12 spokes (see proximity::sigdt tests).
-    let mut bd = Boundary::from_graph(&dt, &sigdt::proximity::sigdt::sigdt_mask(&dt));
+    let g = sigdt::proximity::sigdt::sigdt_mask(&dt);
+    let mut bd = Boundary::from_graph(&dt, &g);
     assert_eq!(class_of(&bd, &dt, 12), VertexClass::Interior);
     let mut stats = Stats::default();
-    inflate(&mut bd, &mut stats);
+    inflate(&mut bd, &g, &mut stats);
     assert_eq!(stats.inflated_triangles, 0);
     sculpt(&mut bd, &mut stats);
     assert_eq!((stats.interior_before_sculpting, stats.sculpted_triangles), (1, 1));

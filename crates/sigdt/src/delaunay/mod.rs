@@ -190,10 +190,8 @@ impl Triangulation {
     /// Every undirected edge once, as the half-edge that represents it: the one with the
     /// smaller index of a twin pair, or the hull half-edge.
     pub fn edge_halfedges(&self) -> impl Iterator<Item = u32> + '_ {
-        (0..self.triangles.len() as u32).filter(move |&h| {
-            let t = self.halfedges[h as usize];
-            t == EMPTY || h < t
-        })
+        // EMPTY is u32::MAX, so `h < twin` also holds for every hull half-edge.
+        (0..self.triangles.len() as u32).filter(move |&h| h < self.halfedges[h as usize])
     }
 
     /// Hull vertices in counter-clockwise order, starting at the lowest vertex number.

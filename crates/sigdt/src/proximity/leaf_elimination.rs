@@ -19,8 +19,17 @@ use crate::graph::EdgeMask;
 
 /// Adds to `graph` the edges that eliminate its leaves; returns how many were added.
 pub fn eliminate_leaves(dt: &Triangulation, graph: &mut EdgeMask) -> usize {
+    let degree = graph.degrees(dt);
+    eliminate_leaves_with_degrees(dt, graph, degree)
+}
+
+/// [`eliminate_leaves`] given the degree of every vertex in `graph`.
+pub fn eliminate_leaves_with_degrees(
+    dt: &Triangulation,
+    graph: &mut EdgeMask,
+    mut degree: Vec<u32>,
+) -> usize {
     let n = dt.num_vertices() as u32;
-    let mut degree: Vec<u32> = (0..n).map(|v| graph.degree(dt, v) as u32).collect();
     let mut leaves: Vec<(f64, usize, u32, u32)> = (0..n)
         .filter(|&v| degree[v as usize] == 1)
         .filter_map(|v| {

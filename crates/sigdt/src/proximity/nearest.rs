@@ -11,21 +11,24 @@
 //! # References
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 use crate::delaunay::{Shape, Triangulation};
-use crate::geometry::distance;
+use crate::geometry::squared_distance;
 
 /// `r[v]`: distance from vertex `v` to its nearest other vertex (`∞` for a lone point), in
 /// the triangulation's scaled coordinates.
 pub fn nearest_neighbour_distances(dt: &Triangulation) -> Vec<f64> {
+    // Minimum of squared lengths, then one square root per vertex: sqrt is monotone and
+    // correctly rounded, so this equals the minimum of the lengths.
     let mut r = vec![f64::INFINITY; dt.num_vertices()];
     let mut visit = |a: u32, b: u32| {
-        let len = distance(dt.point(a), dt.point(b));
-        r[a as usize] = r[a as usize].min(len);
-        r[b as usize] = r[b as usize].min(len);
+        let len2 = squared_distance(dt.point(a), dt.point(b));
+        r[a as usize] = r[a as usize].min(len2);
+        r[b as usize] = r[b as usize].min(len2);
     };
     match dt.shape() {
         Shape::Proper => dt.edge_halfedges().for_each(|h| visit(dt.origin(h), dt.dest(h))),
         _ => dt.line_edges().for_each(|[a, b]| visit(a, b)),
     }
+    r.iter_mut().for_each(|x| *x = x.sqrt());
     r
 }
 

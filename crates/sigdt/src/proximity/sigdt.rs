@@ -18,7 +18,7 @@
 //! - [Tou88] G. T. Toussaint. A graph-theoretical primal sketch. 1988.
 use super::nearest::nearest_neighbour_distances;
 use crate::delaunay::{Shape, Triangulation};
-use crate::geometry::distance;
+use crate::geometry::{distance, squared_distance};
 use crate::graph::EdgeMask;
 use crate::Edge;
 
@@ -33,16 +33,29 @@ pub fn is_sig_edge(len: f64, ru: f64, rv: f64) -> bool {
 }
 
 /// The SIGDT edges of a proper triangulation as an edge mask.
+///
+/// Same test as [`is_sig_edge`], on squared lengths: `|uv|² <= ((r(u) + r(v))·(1 + slack))²`
+/// (both sides are non-negative, so squaring keeps the order; the slack absorbs the
+/// rounding difference).
 pub fn sigdt_mask(dt: &Triangulation) -> EdgeMask {
+    sigdt_with_degrees(dt).0
+}
+
+/// [`sigdt_mask`] and the degree of every vertex in it, from one pass over the edges.
+pub fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
     let r = nearest_neighbour_distances(dt);
     let mut mask = EdgeMask::new(dt);
+    let mut degree = vec![0u32; dt.num_vertices()];
     for h in dt.edge_halfedges() {
         let (a, b) = (dt.origin(h), dt.dest(h));
-        if is_sig_edge(dt.length(h), r[a as usize], r[b as usize]) {
+        let reach = (r[a as usize] + r[b as usize]) * (1.0 + TIE_SLACK);
+        if squared_distance(dt.point(a), dt.point(b)) <= reach * reach {
             mask.set(dt, h, true);
+            degree[a as usize] += 1;
+            degree[b as usize] += 1;
         }
     }
-    mask
+    (mask, degree)
 }
 
 /// The SIGDT edges as sorted input-index pairs; for collinear input, the SIG-conforming

@@ -15,7 +15,7 @@
 //!
 //! # References
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
-use crate::delaunay::{Triangulation, EMPTY};
+use crate::delaunay::{prev, Triangulation, EMPTY};
 use crate::graph::{EdgeMask, UnionFind};
 
 /// How a vertex sits on the boundary.
@@ -39,7 +39,8 @@ pub struct Boundary<'a> {
     pub edges: EdgeMask,
     /// Class of every vertex.
     pub class: Vec<VertexClass>,
-    /// Connectivity of `B` (an over-approximation; see [`crate::reconstruct::pocket`]).
+    /// Connectivity of `B` (an over-approximation; see [`crate::reconstruct::pocket`]);
+    /// built by [`Boundary::track_components`] when inflating has work to do.
     pub components: UnionFind,
     /// Number of non-manifold vertices.
     pub non_manifold: usize,
@@ -76,26 +77,75 @@ impl<'a> Boundary<'a> {
             inside,
             edges: EdgeMask::new(dt),
             class: vec![VertexClass::Manifold; dt.num_vertices()],
-            components: UnionFind::new(dt.num_vertices()),
+            components: UnionFind::new(0),
             non_manifold: 0,
             interior: 0,
-            stamp: vec![0; nt],
+            stamp: Vec::new(),
             epoch: 0,
         };
+        bd.boundary_and_classes(g);
+        bd
+    }
+
+    /// Union-find over the endpoints of every edge of `g` and of the boundary, and the
+    /// pocket-search stamps: what inflating needs, built only when it has work.
+    pub fn track_components(&mut self, g: &EdgeMask) {
+        let dt = self.dt;
+        self.components = UnionFind::new(dt.num_vertices());
         for h in dt.edge_halfedges() {
-            if g.contains(h) {
-                bd.components.union(dt.origin(h), dt.dest(h));
-                if !bd.left_is_in(h) || !bd.right_is_in(h) {
-                    bd.edges.set(dt, h, true);
+            if g.contains(h) || self.edges.contains(h) {
+                self.components.union(dt.origin(h), dt.dest(h));
+            }
+        }
+        self.stamp = vec![0; dt.num_triangles()];
+    }
+
+    /// `B` from the labels, and the classes of all vertices, in sequential sweeps over edges
+    /// and triangles: the same classes as [`Boundary::classify`] on every vertex, without
+    /// walking stars.
+    fn boundary_and_classes(&mut self, g: &EdgeMask) {
+        let dt = self.dt;
+        let n = dt.num_vertices();
+        let (mut transitions, mut dangling) = (vec![0u32; n], vec![0u32; n]);
+        let mut touches_out = vec![false; n];
+        for h in dt.edge_halfedges() {
+            let (left, right) = (self.left_is_in(h), self.right_is_in(h));
+            if g.contains(h) && (!left || !right) {
+                self.edges.set(dt, h, true);
+            }
+            let (a, b) = (dt.origin(h) as usize, dt.dest(h) as usize);
+            if left != right {
+                transitions[a] += 1;
+                transitions[b] += 1;
+            } else if !left && self.edges.contains(h) {
+                dangling[a] += 1;
+                dangling[b] += 1;
+            }
+            if !right {
+                // Covers hull edges, whose outside is exterior.
+                touches_out[a] = true;
+                touches_out[b] = true;
+            }
+        }
+        for (t, &inside) in self.inside.iter().enumerate() {
+            if !inside {
+                for h in 3 * t..3 * t + 3 {
+                    touches_out[dt.origin(h as u32) as usize] = true;
                 }
             }
         }
-        for v in 0..dt.num_vertices() as u32 {
-            let c = bd.classify(v);
-            bd.class[v as usize] = c;
-            bd.count(c, 1);
+        for v in 0..n {
+            let class = if !touches_out[v] {
+                VertexClass::Interior
+            } else if transitions[v] == 2 && dangling[v] == 0 {
+                VertexClass::Manifold
+            } else {
+                VertexClass::NonManifold
+            };
+            debug_assert_eq!(class, self.classify(v as u32));
+            self.class[v] = class;
+            self.count(class, 1);
         }
-        bd
     }
 
     /// Whether the triangle on the left of `h` is interior.
@@ -115,11 +165,20 @@ impl<'a> Boundary<'a> {
     /// The class of `v` from its star (O(deg v)).
     pub fn classify(&self, v: u32) -> VertexClass {
         let (mut transitions, mut dangling, mut touches_out) = (0, 0, false);
-        for h in self.dt.incident(v) {
+        let mut edge = |h: u32| {
             let (left, right) = (self.left_is_in(h), self.right_is_in(h));
             transitions += usize::from(left != right);
             dangling += usize::from(!left && !right && self.edges.contains(h));
             touches_out |= !left || !right;
+        };
+        let mut last = EMPTY;
+        for h in self.dt.outgoing(v) {
+            edge(h);
+            last = h;
+        }
+        // A hull vertex also has its incoming hull edge, `prev` of the last outgoing one.
+        if last != EMPTY && self.dt.twin(prev(last)) == EMPTY {
+            edge(prev(last));
         }
         if !touches_out {
             VertexClass::Interior

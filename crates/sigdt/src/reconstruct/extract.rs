@@ -43,15 +43,29 @@ pub fn loops(bd: &Boundary<'_>) -> Vec<Vec<usize>> {
     loops
 }
 
-/// The edges of closed loops, sorted, `[i, j]` with `i < j`.
-pub fn loop_edges(loops: &[Vec<usize>]) -> Vec<Edge> {
-    let mut edges: Vec<Edge> = loops
-        .iter()
-        .flat_map(|l| (0..l.len()).map(move |k| (l[k], l[(k + 1) % l.len()])))
-        .filter(|(a, b)| a != b)
-        .map(|(a, b)| [a.min(b), a.max(b)])
-        .collect();
-    edges.sort_unstable();
-    edges.dedup();
+/// The edges of closed, vertex-disjoint loops over indices `0..n`, sorted, `[i, j]` with
+/// `i < j`. Each vertex is the smaller end of at most two loop edges, so a counting pass
+/// replaces a comparison sort.
+pub fn loop_edges(loops: &[Vec<usize>], n: usize) -> Vec<Edge> {
+    let mut larger = vec![[usize::MAX; 2]; n];
+    let mut count = 0;
+    for l in loops {
+        for k in 0..l.len() {
+            let (a, b) = (l[k], l[(k + 1) % l.len()]);
+            let slot = &mut larger[a.min(b)];
+            let j = a.max(b);
+            if a != b && !slot.contains(&j) {
+                let free = usize::from(slot[0] != usize::MAX);
+                debug_assert!(slot[free] == usize::MAX, "vertex on more than two loop edges");
+                slot[free] = j;
+                count += 1;
+            }
+        }
+    }
+    let mut edges = Vec::with_capacity(count);
+    for (i, mut js) in larger.into_iter().enumerate() {
+        js.sort_unstable();
+        edges.extend(js.into_iter().filter(|&j| j != usize::MAX).map(|j| [i, j]));
+    }
     edges
 }

@@ -32,10 +32,15 @@ use super::pocket::fill_pocket;
 use super::queue::CandidateQueue;
 use super::result::Stats;
 use crate::delaunay::{next, prev, EMPTY};
+use crate::graph::EdgeMask;
 
-/// Runs inflating to completion, updating `stats`.
-pub fn inflate(bd: &mut Boundary<'_>, stats: &mut Stats) {
+/// Runs inflating to completion on the boundary of graph `g`, updating `stats`.
+pub fn inflate(bd: &mut Boundary<'_>, g: &EdgeMask, stats: &mut Stats) {
     stats.non_manifold_before = bd.non_manifold;
+    if bd.non_manifold == 0 {
+        return;
+    }
+    bd.track_components(g);
     let mut queue = CandidateQueue::default();
     for v in 0..bd.dt.num_vertices() as u32 {
         if bd.class[v as usize] == VertexClass::NonManifold {

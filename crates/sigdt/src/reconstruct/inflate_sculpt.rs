@@ -17,7 +17,7 @@ pub fn inflate_and_sculpt(
     mut stats: Stats,
 ) -> Reconstruction {
     let mut bd = Boundary::from_graph(dt, graph);
-    inflate(&mut bd, &mut stats);
+    inflate(&mut bd, graph, &mut stats);
     sculpt(&mut bd, &mut stats);
     let loops = loops(&bd);
     let status = if bd.interior > 0 {
@@ -31,7 +31,7 @@ pub fn inflate_and_sculpt(
         Status::Polygons
     };
     Reconstruction {
-        edges: loop_edges(&loops),
+        edges: loop_edges(&loops, dt.input_len()),
         loops,
         paths: Vec::new(),
         status,

@@ -21,7 +21,9 @@ use super::degenerate::degenerate_result;
 use super::inflate_sculpt::inflate_and_sculpt;
 use super::result::{Reconstruction, Stats};
 use crate::delaunay::Triangulation;
-use crate::proximity::{leaf_elimination::eliminate_leaves, sigdt::sigdt_mask};
+use crate::proximity::{
+    leaf_elimination::eliminate_leaves_with_degrees, sigdt::sigdt_with_degrees,
+};
 use crate::{Point, Result};
 
 /// Reconstructs `points` with SIG-CONNECT2D.
@@ -35,12 +37,13 @@ pub fn sig_connect2d_on(dt: &Triangulation, leaf_elimination: bool) -> Reconstru
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
-    let mut graph = sigdt_mask(dt);
-    let leaf_edges_added = if leaf_elimination { eliminate_leaves(dt, &mut graph) } else { 0 };
+    let (mut graph, degree) = sigdt_with_degrees(dt);
+    let leaf_edges_added =
+        if leaf_elimination { eliminate_leaves_with_degrees(dt, &mut graph, degree) } else { 0 };
     let stats = Stats {
         points: dt.input_len(),
         distinct_points: dt.num_vertices(),
-        graph_edges: graph.len(dt),
+        graph_edges: graph.len(),
         leaf_edges_added,
         ..Stats::default()
     };
