@@ -17,8 +17,8 @@ pub enum Error {
     },
     /// The coordinates span more binary orders of magnitude than exact predicates allow.
     #[error(
-        "point {index} has a coordinate ({value:e}) more than about 2^172 times smaller than the \
-         largest coordinate ({largest:e}); exact predicates cannot handle that range"
+        "point {index} has a coordinate ({value:?}) more than about 2^172 times smaller than the \
+         largest coordinate ({largest:?}); exact predicates cannot handle that range"
     )]
     CoordinateRange {
         /// 0-based index of the point in the input.

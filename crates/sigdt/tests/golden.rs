@@ -6,7 +6,7 @@ use sigdt::io::{read_edges, read_points};
 use sigdt::testing::check_reconstruction;
 use sigdt::{reconstruct, Options};
 use std::collections::BTreeMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Exact cases per category that must be reached with the default options (leaf
 /// elimination on), and without it.
@@ -47,7 +47,7 @@ fn data_dir() -> PathBuf {
     dir
 }
 
-fn cases(dir: &PathBuf) -> Vec<Case> {
+fn cases(dir: &Path) -> Vec<Case> {
     let index = std::fs::read_to_string(dir.join("index.csv")).unwrap();
     let mut lines = index.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();

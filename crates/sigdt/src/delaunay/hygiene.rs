@@ -36,7 +36,8 @@ impl Scaling {
         let scaling = Scaling { exponent };
         for (index, p) in points.iter().enumerate() {
             for (raw, c) in p.iter().zip(scaling.apply(*p)) {
-                if c != 0.0 && c.abs() < MIN_ALLOWED {
+                // Judge by the raw value: a tiny coordinate may scale to exactly 0.0.
+                if *raw != 0.0 && c.abs() < MIN_ALLOWED {
                     return Err(Error::CoordinateRange { index, value: *raw, largest });
                 }
             }
@@ -114,6 +115,12 @@ mod tests {
         assert!(e.to_string().contains("point 1"), "{e}");
         let e = Scaling::for_points(&[[1e200, 0.0], [1e-200, 1.0]]).unwrap_err();
         assert!(matches!(e, Error::CoordinateRange { index: 1, .. }), "{e}");
+        // 1e-300 next to 1e300 underflows to exactly zero when scaled: still an error.
+        let e = Scaling::for_points(&[[1e300, 0.0], [1e-300, 1e300]]).unwrap_err();
+        assert!(
+            matches!(e, Error::CoordinateRange { index: 1, value, .. } if value == 1e-300),
+            "{e}"
+        );
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! The Delaunay triangulation, seen through flat index arrays.
 //!
-//! Built with the `spade` crate (exact predicates) in BRIO order ([`brio`]) and then exported
+//! Built with the `spade` crate (exact predicates) in BRIO order (module `brio`) and then exported
 //! to the representation every algorithm here uses (ALGORITHMS.md §0.2):
 //!
 //! - `triangles[3t..3t+3]`: the vertices of triangle `t`, counter-clockwise;

@@ -3,7 +3,7 @@
 //! - [`points`]: readers for plain `x y` point files, Dey's `.gtn` files and `i j` edge files.
 //!   They stream line by line with bounded memory and report every problem as
 //!   [`Error::Parse`](crate::Error::Parse) naming the file and the 1-based line.
-//! - [`write`]: writers for edge lists, ordered loops, WKT, GeoJSON and SVG.
+//! - [`write`](mod@write): writers for edge lists, ordered loops, WKT, GeoJSON and SVG.
 
 pub mod points;
 pub mod write;

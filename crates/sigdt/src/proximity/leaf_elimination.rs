@@ -4,7 +4,7 @@
 //! incident Delaunay edge not yet in the graph. The paper says this "does not affect results
 //! in general" and helps point sets with sharp corners.
 //!
-//! Order [D]: leaves are served in ascending length of that candidate edge (ties by input
+//! Order (our decision, ALGORITHMS.md §1.4): leaves are served in ascending length of that candidate edge (ties by input
 //! index), and a leaf that an earlier addition already gave a second edge is skipped. This
 //! never gives a vertex a third edge when two leaves choose each other, and unlike index
 //! order it does not depend on how the input happens to be ordered.
@@ -14,6 +14,8 @@
 //!
 //! # References
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
 use crate::delaunay::Triangulation;
 use crate::graph::EdgeMask;
 

@@ -10,6 +10,8 @@
 //!
 //! # References
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
 use crate::delaunay::{Shape, Triangulation};
 use crate::geometry::squared_distance;
 

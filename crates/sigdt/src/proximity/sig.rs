@@ -12,6 +12,8 @@
 //!
 //! # References
 //! - [Tou88] G. T. Toussaint. A graph-theoretical primal sketch. 1988.
+//!
+//! [Tou88]: https://doi.org/10.1016/0167-8655(88)90029-4
 use super::kdtree::KdTree;
 use super::nearest::nearest_neighbour_distances;
 use super::sigdt::{is_sig_edge, TIE_SLACK};

@@ -3,7 +3,7 @@
 //! A Delaunay edge `uv` is kept iff `|uv| <= r(u) + r(v)`, where `r(x)` is the distance from
 //! `x` to its nearest neighbour (the closed SIG rule of [Tou88]: the two disks of influence
 //! touch or overlap). Ties are kept with a relative slack of 1e-12, so that exactly touching
-//! disks (regular spacing) stay in despite rounding (ALGORITHMS.md §1.2, a [D] decision).
+//! disks (regular spacing) stay in despite rounding (ALGORITHMS.md §1.2, a (our decision) decision).
 //!
 //! # Guarantee
 //! If the points sample a smooth closed curve with ρ < 1 and non-uniformity u < 2, SIGDT
@@ -16,6 +16,9 @@
 //! # References
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 //! - [Tou88] G. T. Toussaint. A graph-theoretical primal sketch. 1988.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+//! [Tou88]: https://doi.org/10.1016/0167-8655(88)90029-4
 use super::nearest::nearest_neighbour_distances;
 use crate::delaunay::{Shape, Triangulation};
 use crate::geometry::{distance, squared_distance};

@@ -5,7 +5,7 @@
 //! boundary edge; the one that least increases the total boundary length is taken (its new
 //! edges added, edges that become interior removed) until no non-manifold vertex is left.
 //!
-//! Cost of a triangle `t` [P + D]: for each edge, `+len` if it is not on the boundary (it
+//! Cost of a triangle `t` (paper, with our decision): for each edge, `+len` if it is not on the boundary (it
 //! becomes boundary), `−len` if it is on the boundary with interior on the other side (it
 //! becomes interior), `0` if it is a boundary edge with exterior on both sides (dangling).
 //! Interior edges are removed at once, not at the end as in the paper's figure: the labels are
@@ -27,6 +27,9 @@
 //! - [OM13] S. Ohrhallinger, S. Mudur. An efficient algorithm for determining an aesthetic
 //!   shape connecting unorganised 2D points. CGF 32(8), 2013.
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+//! [OM13]: https://doi.org/10.1111/cgf.12227
 use super::boundary::{Boundary, VertexClass};
 use super::pocket::fill_pocket;
 use super::queue::CandidateQueue;

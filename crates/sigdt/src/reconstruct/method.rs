@@ -8,7 +8,7 @@ use std::str::FromStr;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[non_exhaustive]
 pub enum Method {
-    /// SIG-CONNECT2D [MOW22]: SIGDT, then CONNECT2D's inflating and sculpting.
+    /// SIG-CONNECT2D [MOW22](https://doi.org/10.1111/cgf.14654): SIGDT, then CONNECT2D's inflating and sculpting.
     #[default]
     SigConnect2d,
 }
@@ -51,7 +51,7 @@ pub struct Options {
     /// The method to run.
     pub method: Method,
     /// Give every SIGDT leaf its shortest missing Delaunay edge before inflating (SIGDT2,
-    /// [MOW22] §4.2.3). On by default: measured on the labelled curves it never lowers the
+    /// [MOW22](https://doi.org/10.1111/cgf.14654) §4.2.3). On by default: measured on the labelled curves it never lowers the
     /// exact-reconstruction rate and raises it on sharp corners (see `docs/algorithms.md`).
     pub leaf_elimination: bool,
 }

@@ -1,4 +1,4 @@
-//! Enclosed exterior pockets (ALGORITHMS.md §2.5, a [D] decision: the paper does not discuss
+//! Enclosed exterior pockets (ALGORITHMS.md §2.5, a (our decision) decision: the paper does not discuss
 //! them).
 //!
 //! When inflating takes a triangle `abc` that had only `ab` on the boundary while `c` was

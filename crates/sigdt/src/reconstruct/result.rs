@@ -38,7 +38,7 @@ pub enum Status {
     Polygons,
     /// Sculpting found no candidate triangle while these points (input indices, sorted)
     /// were still inside the boundary. The loops are simple and disjoint but miss them.
-    /// [MOW22] §4.2.2: sculpting can fail when the Delaunay triangulation has no suitable
+    /// [MOW22](https://doi.org/10.1111/cgf.14654) §4.2.2: sculpting can fail when the Delaunay triangulation has no suitable
     /// Hamiltonian cycle.
     SculptingStuck {
         /// The points not on any loop.
@@ -87,7 +87,7 @@ impl std::fmt::Display for Status {
     }
 }
 
-/// Per-stage counts of one run ([MOW22] Algorithm 1).
+/// Per-stage counts of one run ([MOW22](https://doi.org/10.1111/cgf.14654) Algorithm 1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Stats {
     /// Number of input points.

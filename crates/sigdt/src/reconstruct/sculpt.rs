@@ -22,6 +22,9 @@
 //! - [OM13] S. Ohrhallinger, S. Mudur. An efficient algorithm for determining an aesthetic
 //!   shape connecting unorganised 2D points. CGF 32(8), 2013.
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//!
+//! [OM13]: https://doi.org/10.1111/cgf.12227
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
 use super::boundary::{Boundary, VertexClass};
 use super::queue::CandidateQueue;
 use super::result::Stats;

@@ -17,6 +17,8 @@
 //!
 //! # References
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. PG 2022.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
 use super::degenerate::degenerate_result;
 use super::inflate_sculpt::inflate_and_sculpt;
 use super::result::{Reconstruction, Stats};
