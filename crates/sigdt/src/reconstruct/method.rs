@@ -51,8 +51,9 @@ pub struct Options {
     /// The method to run.
     pub method: Method,
     /// Give every SIGDT leaf its shortest missing Delaunay edge before inflating (SIGDT2,
-    /// [MOW22](https://doi.org/10.1111/cgf.14654) §4.2.3). On by default: measured on the labelled curves it never lowers the
-    /// exact-reconstruction rate and raises it on sharp corners (see `docs/algorithms.md`).
+    /// [MOW22](https://doi.org/10.1111/cgf.14654) §4.2.3). On by default: on the 522
+    /// labelled curves it is never worse and raises exact reconstructions from 92 to 105 of
+    /// 110 manifold and from 65 to 75 of 100 sharp-corner cases (`docs/algorithms.md`).
     pub leaf_elimination: bool,
 }
 

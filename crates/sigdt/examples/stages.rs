@@ -1,4 +1,5 @@
-//! Ad hoc profiling helper: `profile_spiral N REPS` times each stage of SIG-CONNECT2D on the
+//! Per-stage timing: `cargo run --release -p sigdt --example stages -- N REPS` times each stage
+//! of SIG-CONNECT2D on the
 //! spiral band (median over REPS).
 use sigdt::proximity::{leaf_elimination::eliminate_leaves, sigdt::sigdt_mask};
 use sigdt::reconstruct::{boundary::Boundary, extract, inflate::inflate, sculpt::sculpt};
