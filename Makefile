@@ -2,7 +2,9 @@
 # rustfmt) installed; cargo fetches the crates listed in Cargo.lock.
 SHELL := /bin/bash
 CARGO ?= cargo
-SIGDT := target/release/sigdt
+# Honour CARGO_TARGET_DIR when the caller sets it.
+TARGET_DIR := $(or $(CARGO_TARGET_DIR),target)
+SIGDT := $(TARGET_DIR)/release/sigdt
 DEMO := glyph_n_tilde
 
 .PHONY: all build demo test lint rust-test doc bench clean
