@@ -7,7 +7,12 @@ TARGET_DIR := $(or $(CARGO_TARGET_DIR),target)
 SIGDT := $(TARGET_DIR)/release/sigdt
 DEMO := glyph_n_tilde
 
-.PHONY: all build demo test lint rust-test doc bench clean
+.PHONY: all build demo test lint rust-test doc bench clean py-build py-test py-lint
+
+# Python: a project-local virtualenv with the pinned dev dependencies.
+PYTHON ?= python3
+VENV := .venv
+VPY := $(VENV)/bin/python
 
 all: build
 
@@ -27,8 +32,25 @@ demo: build
 	else echo "ground truth: NOT exact"; exit 1; fi
 	@echo "wrote out/$(DEMO).edges, out/$(DEMO).loops, out/$(DEMO).svg, out/glyph_sigma.svg"
 
-## test: formatting, lints, every Rust test (unit, property, golden, CLI), docs.
-test: lint rust-test doc
+## test: formatting, lints, every Rust test (unit, property, golden, CLI), docs, and the
+## Python package's tests (binding contract, properties, docs, Dask, CLI parity).
+test: lint rust-test doc py-test
+
+$(VENV)/.installed: requirements-dev.txt
+	$(PYTHON) -m venv $(VENV)
+	$(VPY) -m pip install --quiet --disable-pip-version-check -r requirements-dev.txt
+	touch $@
+
+## py-build: build the extension in release mode into .venv (maturin develop).
+py-build: $(VENV)/.installed
+	VIRTUAL_ENV=$(abspath $(VENV)) $(VENV)/bin/maturin develop --release --locked --quiet
+
+py-lint: $(VENV)/.installed
+	$(VENV)/bin/ruff check python
+	$(VENV)/bin/ruff format --check python
+
+py-test: py-build py-lint build
+	$(VPY) -m pytest -q
 
 lint:
 	$(CARGO) fmt --all --check
@@ -45,4 +67,4 @@ bench:
 	$(CARGO) run --release --locked -p sigdt --example speed
 
 clean:
-	rm -rf out
+	rm -rf out $(VENV)

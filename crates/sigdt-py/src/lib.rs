@@ -1,0 +1,133 @@
+//! Python bindings of `sigdt`, built by maturin as `sigdt._core`.
+//!
+//! This crate only converts types: numpy arrays in (borrowed, not copied, when C-contiguous
+//! float64), numpy arrays and plain tuples out, core errors to Python exceptions, panics to
+//! `InternalError`. The user-facing names, defaults and docstrings live in `python/sigdt`.
+mod convert;
+
+use convert::{err, guarded, points, InternalError, InvalidInputError, ParseError};
+use numpy::{IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray2};
+use pyo3::prelude::*;
+use pyo3::types::{PyList, PyTuple};
+use rayon::prelude::*;
+use sigdt::{GraphKind, Method, Options};
+
+fn options(method: &str, leaf_elimination: bool) -> PyResult<Options> {
+    let method: Method = method.parse().map_err(err)?;
+    Ok(Options { method, leaf_elimination })
+}
+
+/// `reconstruct(points, method, leaf_elimination) -> tuple` (see convert::reconstruction).
+#[pyfunction]
+fn reconstruct<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    method: &str,
+    leaf_elimination: bool,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let options = options(method, leaf_elimination)?;
+    let pts = convert::points(&points)?;
+    let rec = py
+        .detach(|| guarded(|| sigdt::reconstruct(pts, &options)))
+        .map_err(InternalError::new_err)?
+        .map_err(err)?;
+    convert::reconstruction(py, &rec)
+}
+
+/// `reconstruct_many(point_sets, method, leaf_elimination, n_jobs) -> list[tuple]`, in
+/// parallel with the GIL released; an error names the failing set.
+#[pyfunction]
+#[pyo3(signature = (point_sets, method, leaf_elimination, n_jobs=None))]
+fn reconstruct_many<'py>(
+    py: Python<'py>,
+    point_sets: Vec<PyReadonlyArray2<'py, f64>>,
+    method: &str,
+    leaf_elimination: bool,
+    n_jobs: Option<usize>,
+) -> PyResult<Bound<'py, PyList>> {
+    let options = options(method, leaf_elimination)?;
+    let sets = point_sets
+        .iter()
+        .enumerate()
+        .map(|(k, a)| {
+            points(a)
+                .map_err(|e| InvalidInputError::new_err(format!("point set {k}: {}", e.value(py))))
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let run = || -> Vec<Result<sigdt::Result<sigdt::Reconstruction>, String>> {
+        sets.par_iter().map(|pts| guarded(|| sigdt::reconstruct(pts, &options))).collect()
+    };
+    let results = py.detach(|| match n_jobs {
+        None => Ok(run()),
+        Some(threads) => rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map(|pool| pool.install(run))
+            .map_err(|e| e.to_string()),
+    });
+    let results = results.map_err(pyo3::exceptions::PyRuntimeError::new_err)?;
+    let list = PyList::empty(py);
+    for (k, result) in results.into_iter().enumerate() {
+        let rec = result
+            .map_err(|msg| InternalError::new_err(format!("point set {k}: {msg}")))?
+            .map_err(|e| {
+                let py_err = err(e);
+                let message = format!("point set {k}: {}", py_err.value(py));
+                match () {
+                    _ if py_err.is_instance_of::<ParseError>(py) => ParseError::new_err(message),
+                    _ if py_err.is_instance_of::<InvalidInputError>(py) => {
+                        InvalidInputError::new_err(message)
+                    }
+                    _ => pyo3::exceptions::PyValueError::new_err(message),
+                }
+            })?;
+        list.append(convert::reconstruction(py, &rec)?)?;
+    }
+    Ok(list)
+}
+
+/// `proximity_graph(points, kind, k) -> (m, 2) int64 array`.
+#[pyfunction]
+#[pyo3(signature = (points, kind, k=None))]
+fn proximity_graph<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    kind: &str,
+    k: Option<usize>,
+) -> PyResult<Bound<'py, PyArray2<i64>>> {
+    let kind = GraphKind::from_name(kind, k).map_err(err)?;
+    let pts = convert::points(&points)?;
+    let edges = py
+        .detach(|| guarded(|| sigdt::proximity_graph(pts, kind)))
+        .map_err(InternalError::new_err)?
+        .map_err(err)?;
+    convert::edges(py, &edges)
+}
+
+/// `read_points(path) -> (n, 2) float64 array`, in any format the CLI reads.
+#[pyfunction]
+fn read_points<'py>(
+    py: Python<'py>,
+    path: std::path::PathBuf,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let pts = py.detach(|| sigdt::io::read_points(&path)).map_err(err)?;
+    let n = pts.len();
+    let flat: Vec<f64> = pts.iter().flatten().copied().collect();
+    flat.into_pyarray(py).reshape([n, 2])
+}
+
+/// The extension module.
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(reconstruct, m)?)?;
+    m.add_function(wrap_pyfunction!(reconstruct_many, m)?)?;
+    m.add_function(wrap_pyfunction!(proximity_graph, m)?)?;
+    m.add_function(wrap_pyfunction!(read_points, m)?)?;
+    m.add("InvalidInputError", m.py().get_type::<InvalidInputError>())?;
+    m.add("ParseError", m.py().get_type::<ParseError>())?;
+    m.add("InternalError", m.py().get_type::<InternalError>())?;
+    m.add("METHODS", Method::ALL.iter().map(|m| m.name()).collect::<Vec<_>>())?;
+    m.add("GRAPH_KINDS", GraphKind::NAMES.to_vec())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

@@ -1,0 +1,30 @@
+"""sigdt: parameter-free 2D curve reconstruction from unorganised points.
+
+SIG-CONNECT2D (Marin, Ohrhallinger, Wimmer, "SIGDT: 2D Curve Reconstruction", Pacific
+Graphics 2022), implemented in Rust: numpy arrays in, numpy arrays and shapely geometries
+out.
+
+>>> import numpy as np, sigdt
+>>> t = np.linspace(0, 2 * np.pi, 64, endpoint=False)
+>>> rec = sigdt.reconstruct(np.c_[np.cos(t), np.sin(t)])
+>>> rec.status, len(rec.edges), rec.is_manifold
+('polygon', 64, True)
+"""
+
+from ._api import proximity_graph, read_points, reconstruct, reconstruct_many
+from ._core import GRAPH_KINDS, METHODS, InternalError, InvalidInputError, ParseError, __version__
+from ._result import Reconstruction
+
+__all__ = [
+    "GRAPH_KINDS",
+    "METHODS",
+    "InternalError",
+    "InvalidInputError",
+    "ParseError",
+    "Reconstruction",
+    "__version__",
+    "proximity_graph",
+    "read_points",
+    "reconstruct",
+    "reconstruct_many",
+]

@@ -1,0 +1,211 @@
+"""The public functions of :mod:`sigdt`: thin, documented wrappers of the Rust core."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from ._core import InvalidInputError
+from ._result import Reconstruction
+
+__all__ = ["proximity_graph", "read_points", "reconstruct", "reconstruct_many"]
+
+#: Default of ``leaf_elimination``: on (measured better on every category of the labelled
+#: curves; see docs/algorithms.md).
+LEAF_ELIMINATION = True
+
+
+def _as_points(points: Any, what: str = "points") -> np.ndarray:
+    try:
+        array = np.ascontiguousarray(points, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise InvalidInputError(f"{what} cannot be read as an (n, 2) float array: {e}") from e
+    if array.size == 0 and array.ndim <= 2:
+        return array.reshape(0, 2)
+    if array.ndim != 2 or array.shape[1] != 2:
+        raise InvalidInputError(f"{what} must have shape (n, 2), got {array.shape}")
+    return array
+
+
+def _check_method(method: str) -> None:
+    if not isinstance(method, str):
+        raise TypeError(f"method must be a str, got {type(method).__name__}")
+    if method not in _core.METHODS:
+        raise ValueError(f"unknown method {method!r} (expected one of: {', '.join(_core.METHODS)})")
+
+
+def reconstruct(
+    points: Any,
+    *,
+    method: str = "sig-connect2d",
+    leaf_elimination: bool = LEAF_ELIMINATION,
+) -> Reconstruction:
+    """Reconstruct the closed curve(s) through a set of 2D points.
+
+    Parameters
+    ----------
+    points : array_like, shape (n, 2)
+        Anything numpy turns into an ``(n, 2)`` float64 array. A C-contiguous float64
+        array is used without copying.
+    method : str, default "sig-connect2d"
+        The reconstruction method (see ``sigdt.METHODS``).
+    leaf_elimination : bool, default True
+        Give every SIGDT leaf its shortest missing Delaunay edge before inflating.
+
+    Returns
+    -------
+    Reconstruction
+        Edges, ordered loops and a status. Fewer than three distinct points, collinear
+        points and duplicates give documented results (statuses ``"too-few-points"``,
+        ``"collinear"``; duplicates get no edges), not errors.
+
+    Raises
+    ------
+    InvalidInputError
+        Wrong shape, NaN or infinite coordinates, or coordinates spanning more than about
+        2**172. (A subclass of ValueError.)
+    ValueError
+        Unknown method.
+    TypeError
+        ``method`` is not a string.
+
+    Examples
+    --------
+    >>> import sigdt
+    >>> rec = sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]])
+    >>> rec
+    Reconstruction(n_points=4, n_edges=4, n_loops=1, status='polygon')
+    >>> rec.edges
+    array([[0, 1],
+           [0, 3],
+           [1, 2],
+           [2, 3]])
+    >>> rec.loops
+    [array([0, 1, 2, 3])]
+    """
+    _check_method(method)
+    array = _as_points(points)
+    return Reconstruction(array, _core.reconstruct(array, method, bool(leaf_elimination)))
+
+
+def reconstruct_many(
+    point_sets: Iterable[Any],
+    *,
+    n_jobs: int | None = None,
+    method: str = "sig-connect2d",
+    leaf_elimination: bool = LEAF_ELIMINATION,
+) -> list[Reconstruction]:
+    """Reconstruct many point sets in parallel (threads in Rust, the GIL released).
+
+    The results equal ``[reconstruct(p, ...) for p in point_sets]``, in the same order.
+
+    Parameters
+    ----------
+    point_sets : iterable of array_like, each shape (n, 2)
+        The point sets.
+    n_jobs : int, optional
+        Number of threads; default: one per core.
+    method, leaf_elimination
+        As in :func:`reconstruct`.
+
+    Returns
+    -------
+    list of Reconstruction
+
+    Raises
+    ------
+    InvalidInputError
+        A set is unusable; the message starts with ``point set K:``, its position.
+    ValueError
+        Unknown method, or ``n_jobs`` < 1.
+
+    Examples
+    --------
+    >>> import sigdt
+    >>> square = [[0, 0], [1, 0], [1, 1], [0, 1]]
+    >>> [r.status for r in sigdt.reconstruct_many([square, square[:2]])]
+    ['polygon', 'too-few-points']
+    """
+    _check_method(method)
+    if n_jobs is not None and (not isinstance(n_jobs, int) or n_jobs < 1):
+        raise ValueError(f"n_jobs must be a positive int or None, got {n_jobs!r}")
+    arrays = [_as_points(p, f"point set {k}") for k, p in enumerate(point_sets)]
+    raws = _core.reconstruct_many(arrays, method, bool(leaf_elimination), n_jobs)
+    return [Reconstruction(a, raw) for a, raw in zip(arrays, raws)]
+
+
+def proximity_graph(points: Any, kind: str = "sigdt", k: int | None = None) -> np.ndarray:
+    """The edges of a proximity graph of the points.
+
+    Parameters
+    ----------
+    points : array_like, shape (n, 2)
+    kind : {"dt", "sig", "sigdt", "sigdt2", "emst", "knn"}, default "sigdt"
+        Delaunay triangulation, spheres-of-influence graph, their intersection, SIGDT after
+        leaf elimination, Euclidean minimum spanning tree, k-nearest-neighbour graph
+        (undirected union).
+    k : int, optional
+        Neighbours per point; required for ``"knn"`` and refused for the others.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(m, 2)`` int64, rows ``[i, j]`` with ``i < j``, sorted.
+
+    Raises
+    ------
+    InvalidInputError
+        Wrong shape or non-finite coordinates.
+    ValueError
+        Unknown kind, or ``k`` missing / given where it does not apply.
+
+    Examples
+    --------
+    >>> import sigdt
+    >>> sigdt.proximity_graph([[0, 0], [1, 0], [1, 1], [0, 1]], "emst")
+    array([[0, 1],
+           [0, 3],
+           [1, 2]])
+    """
+    if kind not in _core.GRAPH_KINDS:
+        raise ValueError(
+            f"unknown graph kind {kind!r} (expected one of: {', '.join(_core.GRAPH_KINDS)})"
+        )
+    if k is not None and (isinstance(k, bool) or not isinstance(k, int) or k < 1):
+        raise ValueError(f"k must be a positive int, got {k!r}")
+    return _core.proximity_graph(_as_points(points), kind, k)
+
+
+def read_points(path: str | os.PathLike[str]) -> np.ndarray:
+    """Read a point file in any format the command line reads.
+
+    Plain text with two numbers a line separated by spaces, tabs or a comma (``.xy``,
+    ``.txt``, ``.csv``, ``.p2d``; ``#`` comments, one header line), or Dey's ``.gtn``.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(n, 2)`` float64.
+
+    Raises
+    ------
+    ParseError
+        A line is malformed; the message names the file and line. (A ValueError.)
+    OSError
+        The file cannot be read.
+
+    Examples
+    --------
+    >>> import sigdt, tempfile, os
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     path = os.path.join(d, "pts.csv")
+    ...     _ = open(path, "w").write("x,y\\n0,0\\n1,0.5\\n")
+    ...     sigdt.read_points(path)
+    array([[0. , 0. ],
+           [1. , 0.5]])
+    """
+    return _core.read_points(os.fspath(path))

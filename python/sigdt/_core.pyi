@@ -1,0 +1,40 @@
+"""Type stubs of the Rust extension ``sigdt._core`` (conversion layer only)."""
+
+import os
+from collections.abc import Sequence
+
+import numpy as np
+import numpy.typing as npt
+from typing_extensions import TypeAlias
+
+_Raw: TypeAlias = tuple[
+    npt.NDArray[np.int64],  # edges (m, 2)
+    npt.NDArray[np.int64],  # loop vertices, flat
+    npt.NDArray[np.int64],  # loop offsets
+    npt.NDArray[np.int64],  # path vertices, flat
+    npt.NDArray[np.int64],  # path offsets
+    str,  # status
+    npt.NDArray[np.int64],  # left out
+    npt.NDArray[np.int64],  # duplicates (d, 2)
+    dict[str, int],  # stats
+]
+
+METHODS: list[str]
+GRAPH_KINDS: list[str]
+__version__: str
+
+class InvalidInputError(ValueError): ...
+class ParseError(ValueError): ...
+class InternalError(RuntimeError): ...
+
+def reconstruct(points: npt.NDArray[np.float64], method: str, leaf_elimination: bool) -> _Raw: ...
+def reconstruct_many(
+    point_sets: Sequence[npt.NDArray[np.float64]],
+    method: str,
+    leaf_elimination: bool,
+    n_jobs: int | None = None,
+) -> list[_Raw]: ...
+def proximity_graph(
+    points: npt.NDArray[np.float64], kind: str, k: int | None = None
+) -> npt.NDArray[np.int64]: ...
+def read_points(path: str | os.PathLike[str]) -> npt.NDArray[np.float64]: ...
