@@ -2,10 +2,16 @@
 //!
 //! - [`points`]: readers for plain `x y` point files, Dey's `.gtn` files and `i j` edge files.
 //!   They stream line by line with bounded memory and report every problem as
-//!   [`Error::Parse`](crate::Error::Parse) naming the file and the 1-based line.
-//! - [`write`](mod@write): writers for edge lists, ordered loops, WKT, GeoJSON and SVG.
+//!   [`Error::Parse`](crate::Error::Parse) naming the file and the 1-based line. The line
+//!   reader lives in `lines`, the `.gtn` format in `gtn` and the edge reader in `edges`.
+//! - [`write`](mod@write): writers for edge lists, ordered loops, WKT, GeoJSON and SVG; the
+//!   SVG picture, [`svg()`], is drawn in `svg`.
 
+mod edges;
+mod gtn;
+mod lines;
 pub mod points;
+mod svg;
 pub mod write;
 
 pub use points::{parse_edges, parse_points, read_edges, read_points, PointFormat, MAX_LINE};
