@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import operator
 import os
 from collections.abc import Iterable
 from typing import Any
@@ -19,15 +20,17 @@ __all__ = ["proximity_graph", "read_points", "reconstruct", "reconstruct_many"]
 LEAF_ELIMINATION = True
 
 
-def _as_points(points: Any, what: str = "points") -> np.ndarray:
+def _as_points(points: Any) -> np.ndarray:
     try:
-        array = np.ascontiguousarray(points, dtype=np.float64)
+        # C-contiguous and aligned (arrays deserialised from message frames, as Dask workers
+        # receive them, may be unaligned); copies only when one of these does not hold.
+        array = np.require(points, dtype=np.float64, requirements=["C", "A"])
     except (TypeError, ValueError) as e:
-        raise InvalidInputError(f"{what} cannot be read as an (n, 2) float array: {e}") from e
+        raise InvalidInputError(f"points cannot be read as an (n, 2) float array: {e}") from e
     if array.size == 0 and array.ndim <= 2:
         return array.reshape(0, 2)
     if array.ndim != 2 or array.shape[1] != 2:
-        raise InvalidInputError(f"{what} must have shape (n, 2), got {array.shape}")
+        raise InvalidInputError(f"points must have shape (n, 2), got {array.shape}")
     return array
 
 
@@ -131,9 +134,20 @@ def reconstruct_many(
     ['polygon', 'too-few-points']
     """
     _check_method(method)
-    if n_jobs is not None and (not isinstance(n_jobs, int) or n_jobs < 1):
-        raise ValueError(f"n_jobs must be a positive int or None, got {n_jobs!r}")
-    arrays = [_as_points(p, f"point set {k}") for k, p in enumerate(point_sets)]
+    if n_jobs is not None:
+        try:
+            valid = not isinstance(n_jobs, bool) and operator.index(n_jobs) >= 1
+        except TypeError:
+            valid = False
+        if not valid:
+            raise ValueError(f"n_jobs must be a positive int or None, got {n_jobs!r}")
+        n_jobs = operator.index(n_jobs)
+    arrays = []
+    for k, p in enumerate(point_sets):
+        try:
+            arrays.append(_as_points(p))
+        except InvalidInputError as e:
+            raise InvalidInputError(f"point set {k}: {e}") from e
     raws = _core.reconstruct_many(arrays, method, bool(leaf_elimination), n_jobs)
     return [Reconstruction(a, raw) for a, raw in zip(arrays, raws)]
 
@@ -185,6 +199,12 @@ def read_points(path: str | os.PathLike[str]) -> np.ndarray:
 
     Plain text with two numbers a line separated by spaces, tabs or a comma (``.xy``,
     ``.txt``, ``.csv``, ``.p2d``; ``#`` comments, one header line), or Dey's ``.gtn``.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file; the format follows its extension (``.gtn``, else plain text), and
+        unknown extensions are detected from the first line.
 
     Returns
     -------

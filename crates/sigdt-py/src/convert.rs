@@ -30,9 +30,9 @@ pub fn points<'a>(array: &'a PyReadonlyArray2<'_, f64>) -> PyResult<&'a [Point]>
             shape[0], shape[1]
         )));
     }
-    let flat = array
-        .as_slice()
-        .map_err(|_| InvalidInputError::new_err("points must be a C-contiguous float64 array"))?;
+    let flat = array.as_slice().map_err(|_| {
+        InvalidInputError::new_err("points must be a C-contiguous, aligned float64 array")
+    })?;
     Ok(bytemuck::cast_slice(flat))
 }
 

@@ -1,0 +1,52 @@
+"""Shared fixtures: the labelled curves of ../shared/data and the built CLI binary."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import pytest
+from hypothesis.configuration import set_hypothesis_home_dir
+
+#: The repository root (python/tests/conftest.py -> parents[2]).
+ROOT = Path(__file__).resolve().parents[2]
+
+# Keep hypothesis's cache (.hypothesis/) out of the working tree.
+if not os.environ.get("HYPOTHESIS_STORAGE_DIRECTORY"):
+    set_hypothesis_home_dir(Path(tempfile.gettempdir()) / "sigdt-hypothesis")
+
+
+@pytest.fixture(scope="session")
+def repo_root() -> Path:
+    return ROOT
+
+
+@pytest.fixture(scope="session")
+def curves_dir() -> Path:
+    """``$SIGDT_DATA``, else ``../shared/data/curves`` next to the repository."""
+    env = os.environ.get("SIGDT_DATA")
+    path = Path(env) if env else ROOT.parent / "shared" / "data" / "curves"
+    if not path.is_dir() or not any(path.glob("*.xy")):
+        pytest.fail(
+            f"the labelled curves are missing: no *.xy in {path} "
+            "(set SIGDT_DATA to the folder holding NAME.xy / NAME.gt)",
+            pytrace=False,
+        )
+    return path
+
+
+@pytest.fixture(scope="session")
+def cli() -> Path:
+    """The release CLI binary (``make py-test`` builds it first)."""
+    target = Path(os.environ.get("CARGO_TARGET_DIR") or ROOT / "target")
+    if not target.is_absolute():
+        target = ROOT / target
+    binary = target / "release" / ("sigdt.exe" if os.name == "nt" else "sigdt")
+    if not binary.is_file():
+        pytest.fail(
+            f"the CLI binary {binary} is missing; build it with `make build` "
+            "(cargo build --release -p sigdt-cli)",
+            pytrace=False,
+        )
+    return binary

@@ -1,0 +1,63 @@
+"""``sigdt.read_points``: every input format, parse errors naming file and line, I/O errors."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sigdt
+
+FILES = {
+    "comments.xy": (
+        "# a comment\nx y\n0 0\n1.5 2 # trailing\n\n-3e2\t4\n",
+        [[0, 0], [1.5, 2], [-300, 4]],
+    ),
+    "points.csv": ("x,y\n0,0\n1.5,2\n", [[0, 0], [1.5, 2]]),
+    "dey.gtn": ("3 2 0 0\n0 0.0 0.0\n1 1.0 0.5\n2 2 3\n", [[0, 0], [1, 0.5], [2, 3]]),
+    "windows.txt": ("x\ty\r\n1\t2\r\n3 4\r\n", [[1, 2], [3, 4]]),
+    "no-final-newline.p2d": ("1 2\n3 4", [[1, 2], [3, 4]]),
+    "empty.xy": ("", np.empty((0, 2))),
+}
+
+
+@pytest.mark.parametrize("name", sorted(FILES))
+def test_read_points_formats(tmp_path, name):
+    text, expected = FILES[name]
+    path = tmp_path / name
+    path.write_bytes(text.encode())
+    for given in (path, str(path)):
+        points = sigdt.read_points(given)
+        assert points.dtype == np.float64 and points.flags.c_contiguous
+        assert np.array_equal(points, np.asarray(expected, dtype=np.float64).reshape(-1, 2))
+
+
+@pytest.mark.parametrize(
+    ("text", "line", "message"),
+    [
+        ("0 0\n1 abc\n", 2, "'abc' is not a number"),
+        ("0 0\n1 0\n1 2 3\n", 3, "expected 2 numbers"),
+        ("# c\n0 0\nnan 1\n", 3, "coordinate 'nan' is not finite"),
+    ],
+)
+def test_read_points_parse_error_names_file_and_line(tmp_path, text, line, message):
+    path = tmp_path / "bad.xy"
+    path.write_bytes(text.encode())
+    with pytest.raises(sigdt.ParseError, match=re.escape(f"{path}:{line}: ") + message):
+        sigdt.read_points(path)
+
+
+def test_read_points_missing_file_is_os_error(tmp_path):
+    missing = tmp_path / "missing.xy"
+    with pytest.raises(OSError, match=re.escape(str(missing))):
+        sigdt.read_points(missing)
+    with pytest.raises(OSError):
+        sigdt.read_points(tmp_path)  # a directory
+
+
+def test_read_points_then_reconstruct_bundled_input(repo_root: Path):
+    points = sigdt.read_points(repo_root / "data/inputs/glyph_n_tilde.xy")
+    expected = np.loadtxt(repo_root / "data/inputs/glyph_n_tilde.gt", dtype=np.int64)
+    assert np.array_equal(points, np.loadtxt(repo_root / "data/inputs/glyph_n_tilde.xy"))
+    assert np.array_equal(sigdt.reconstruct(points).edges, expected)

@@ -1,0 +1,111 @@
+"""Shapely views: geometry types, validity, area, and the from_shapely round trip."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import shapely
+import sigdt
+from blobs import blob
+from sigdt.shapely import from_shapely, to_shapely
+
+
+def test_one_loop_is_a_polygon():
+    rec = sigdt.reconstruct(blob(200, [0.05, 0.02], [0.3, 1.0]))
+    geometry = rec.to_shapely()
+    assert geometry.geom_type == "Polygon" and geometry.is_valid
+    assert len(geometry.interiors) == 0
+    assert len(geometry.exterior.coords) == 201  # closed ring
+    assert to_shapely(rec).equals(geometry)
+
+
+def test_two_separate_circles_are_a_multipolygon():
+    points = np.r_[blob(80), blob(120, center=(4.0, -1.0))]
+    rec = sigdt.reconstruct(points)
+    geometry = rec.to_shapely()
+    assert rec.status == "polygons"
+    assert geometry.geom_type == "MultiPolygon" and geometry.is_valid
+    assert len(geometry.geoms) == 2
+    assert sorted(len(g.exterior.coords) - 1 for g in geometry.geoms) == [80, 120]
+
+
+def test_collinear_points_are_a_linestring():
+    geometry = sigdt.reconstruct([[0, 0], [2, 1], [4, 2], [1, 0.5]]).to_shapely()
+    assert geometry.geom_type == "LineString" and geometry.is_valid
+    assert geometry.length == pytest.approx(np.hypot(4, 2))
+    assert shapely.get_coordinates(geometry).tolist() in (
+        [[0, 0], [1, 0.5], [2, 1], [4, 2]],
+        [[4, 2], [2, 1], [1, 0.5], [0, 0]],
+    )
+
+
+@pytest.mark.parametrize("points", [[], [[1.0, 2.0]]], ids=["0-points", "1-point"])
+def test_no_edges_is_an_empty_linestring(points):
+    geometry = sigdt.reconstruct(points).to_shapely()
+    assert geometry.geom_type == "LineString" and geometry.is_empty
+
+
+def test_two_points_are_a_segment():
+    geometry = sigdt.reconstruct([[0, 0], [3, 4]]).to_shapely()
+    assert geometry.geom_type == "LineString" and geometry.length == pytest.approx(5.0)
+
+
+def test_dense_circle_area_is_pi():
+    rec = sigdt.reconstruct(blob(1000, offset=0.5))
+    polygon = rec.to_shapely()
+    assert polygon.is_valid
+    assert polygon.area == pytest.approx(np.pi, rel=0.01)
+    assert polygon.length == pytest.approx(2 * np.pi, rel=0.01)
+
+
+def test_duplicates_do_not_break_validity():
+    points = blob(150)
+    rec = sigdt.reconstruct(np.r_[points, points[::10]])
+    assert rec.to_shapely().is_valid and rec.to_shapely().area > 3.0
+
+
+def test_from_shapely_returns_the_vertices():
+    polygon = shapely.Polygon([(0, 0), (2, 0), (2, 1), (0, 1)])
+    coords = from_shapely(polygon)
+    assert coords.dtype == np.float64 and coords.flags.c_contiguous and coords.shape == (5, 2)
+    assert coords[0].tolist() == coords[-1].tolist() == [0.0, 0.0]
+
+
+def _round_trip(polygon):
+    """Reconstruct the polygon from its vertices (closing point dropped, order shuffled)."""
+    coords = from_shapely(polygon)
+    assert np.array_equal(coords[0], coords[-1])
+    points = coords[:-1]
+    shuffled = points[np.random.default_rng(5).permutation(len(points))]
+    rec = sigdt.reconstruct(shuffled)
+    assert rec.status == "polygon"
+    return rec.to_shapely()
+
+
+def test_round_trip_of_a_segmentized_circle():
+    # A buffered point has 4 * quad_segs equal sides; segmentize splits every side into the
+    # same number of pieces, so the samples stay uniform.
+    circle = shapely.Point(1.0, -2.0).buffer(3.0, quad_segs=16)
+    polygon = shapely.segmentize(circle, max_segment_length=0.1)
+    sides = np.hypot(*np.diff(shapely.get_coordinates(polygon.exterior), axis=0).T)
+    assert len(sides) == 192 and sides.max() < 1.001 * sides.min()
+    result = _round_trip(polygon)
+    assert result.is_valid
+    assert result.symmetric_difference(polygon).area == pytest.approx(0.0, abs=1e-9)
+    assert result.normalize().equals_exact(polygon.normalize(), tolerance=0.0)
+
+
+def test_round_trip_of_a_smooth_non_convex_shape():
+    # An L with rounded corners: outward buffer rounds the convex corners, the inward one
+    # rounds the reflex corner. Resampled uniformly in arc length along the boundary.
+    ell = shapely.union(shapely.box(0, 0, 4, 1), shapely.box(0, 0, 1, 4))
+    shape = ell.buffer(0.6, quad_segs=32).buffer(-0.3, quad_segs=32)
+    ring = shape.exterior
+    distances = np.linspace(0.0, ring.length, 700, endpoint=False)
+    samples = shapely.get_coordinates(shapely.line_interpolate_point(ring, distances))
+    polygon = shapely.Polygon(samples)
+    assert polygon.is_valid and polygon.area < shape.area * 1.001
+    result = _round_trip(polygon)
+    assert result.is_valid
+    assert result.symmetric_difference(polygon).area == pytest.approx(0.0, abs=1e-9)
+    assert result.normalize().equals_exact(polygon.normalize(), tolerance=0.0)
