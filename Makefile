@@ -7,7 +7,7 @@ TARGET_DIR := $(or $(CARGO_TARGET_DIR),target)
 SIGDT := $(TARGET_DIR)/release/sigdt
 DEMO := glyph_n_tilde
 
-.PHONY: all build demo test lint rust-test doc bench clean py-build py-test py-lint
+.PHONY: all build demo test lint rust-test doc bench bench-python clean py-build py-test py-lint
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -65,6 +65,10 @@ doc:
 ## bench: the speed table (Delaunay vs total time, peak heap) at 1e3..1e6 points.
 bench:
 	$(CARGO) run --release --locked -p sigdt --example speed
+
+## bench-python: Python-call overhead at 1e5 points and reconstruct_many throughput.
+bench-python: py-build build
+	$(VPY) python/bench/bench_python.py
 
 clean:
 	rm -rf out $(VENV)
