@@ -117,23 +117,19 @@ class Reconstruction:
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Reconstruction):
             return NotImplemented
-        return (
-            self.status == other.status
-            and np.array_equal(self.points, other.points)
-            and np.array_equal(self.edges, other.edges)
-            and np.array_equal(self._loop_vertices, other._loop_vertices)
-            and np.array_equal(self._loop_offsets, other._loop_offsets)
-            and np.array_equal(self._path_vertices, other._path_vertices)
-            and np.array_equal(self._path_offsets, other._path_offsets)
-            and np.array_equal(self.left_out, other.left_out)
-            and np.array_equal(self.duplicates, other.duplicates)
-            and self.stats == other.stats
+        return all(
+            a == b if isinstance(a, (str, dict)) else np.array_equal(a, b)
+            for a, b in zip((self.points, *self._raw()), (other.points, *other._raw()))
         )
 
     __hash__ = None  # type: ignore[assignment]  # mutable arrays inside
 
     def __reduce__(self) -> tuple[Any, ...]:
-        raw = (
+        return (Reconstruction, (self.points, self._raw()))
+
+    def _raw(self) -> tuple[Any, ...]:
+        """The fields in the order the extension returns them (see ``__init__``)."""
+        return (
             self.edges,
             self._loop_vertices,
             self._loop_offsets,
@@ -142,6 +138,5 @@ class Reconstruction:
             self.status,
             self.left_out,
             self.duplicates,
-            dict(self.stats),
+            self.stats,
         )
-        return (Reconstruction, (self.points, raw))
