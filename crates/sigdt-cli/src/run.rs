@@ -74,9 +74,16 @@ fn read_input(input: &Path) -> Result<Vec<Point>> {
 /// Prints the `--verbose` summary of a run to stderr.
 fn summary(options: &Options, rec: &Reconstruction, ms: f64) {
     let s = &rec.stats;
-    let leaves = if options.leaf_elimination { "on" } else { "off" };
+    let method = match options.method {
+        // CONNECT2D always adds leaf edges to its BC0; the option applies to SIGDT only.
+        sigdt::Method::Connect2d => options.method.to_string(),
+        _ => {
+            let leaves = if options.leaf_elimination { "on" } else { "off" };
+            format!("{} (leaf elimination {leaves})", options.method)
+        }
+    };
     let lines = [
-        format!("method:                    {} (leaf elimination {leaves})", options.method),
+        format!("method:                    {method}"),
         format!("points:                    {}", s.points),
         format!("distinct points:           {}", s.distinct_points),
         format!("duplicates:                {}", rec.duplicates.len()),

@@ -18,6 +18,7 @@
 
 #![forbid(unsafe_code)]
 
+pub mod baselines;
 pub mod curves;
 pub mod delaunay;
 pub mod error;

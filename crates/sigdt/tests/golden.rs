@@ -4,7 +4,7 @@
 //! never lowered without saying why in the commit.
 use sigdt::io::{read_edges, read_points};
 use sigdt::testing::check_reconstruction;
-use sigdt::{reconstruct, Options};
+use sigdt::{reconstruct, Method, Options};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -16,6 +16,15 @@ const FLOORS_DEFAULT: &[(&str, usize)] = &[
     ("sharp", 75),
     ("multiple", 18),
     ("noisy", 38),
+    ("bezier", 100),
+    ("large", 2),
+];
+/// The CONNECT2D baseline (issue 4 compares it with SIG-CONNECT2D).
+const FLOORS_CONNECT2D: &[(&str, usize)] = &[
+    ("manifold", 107),
+    ("manifold eps<1", 82),
+    ("sharp", 72),
+    ("noisy", 41),
     ("bezier", 100),
     ("large", 2),
 ];
@@ -67,9 +76,8 @@ fn cases(dir: &Path) -> Vec<Case> {
 }
 
 /// (exact, total) per category, plus the `eps<1` row over manifold cases.
-fn score(leaf_elimination: bool) -> BTreeMap<String, (usize, usize)> {
+fn score(options: Options) -> BTreeMap<String, (usize, usize)> {
     let dir = data_dir();
-    let options = Options { leaf_elimination, ..Options::default() };
     let mut table: BTreeMap<String, (usize, usize)> = BTreeMap::new();
     let mut failures = Vec::new();
     for case in cases(&dir) {
@@ -117,10 +125,17 @@ fn check_floors(table: &BTreeMap<String, (usize, usize)>, floors: &[(&str, usize
 
 #[test]
 fn golden_rates_with_leaf_elimination() {
-    check_floors(&score(true), FLOORS_DEFAULT, "leaf elimination on (default)");
+    check_floors(&score(Options::default()), FLOORS_DEFAULT, "leaf elimination on (default)");
 }
 
 #[test]
 fn golden_rates_without_leaf_elimination() {
-    check_floors(&score(false), FLOORS_NO_LEAF_ELIMINATION, "leaf elimination off");
+    let options = Options { leaf_elimination: false, ..Options::default() };
+    check_floors(&score(options), FLOORS_NO_LEAF_ELIMINATION, "leaf elimination off");
+}
+
+#[test]
+fn golden_rates_connect2d() {
+    let options = Options { method: Method::Connect2d, ..Options::default() };
+    check_floors(&score(options), FLOORS_CONNECT2D, "CONNECT2D (baseline)");
 }

@@ -11,16 +11,20 @@ pub enum Method {
     /// SIG-CONNECT2D [MOW22](https://doi.org/10.1111/cgf.14654): SIGDT, then CONNECT2D's inflating and sculpting.
     #[default]
     SigConnect2d,
+    /// CONNECT2D [OM13](https://doi.org/10.1111/cgf.12227): the same inflating and sculpting
+    /// started from BC₀ (EMST plus leaf edges). Ignores `leaf_elimination`.
+    Connect2d,
 }
 
 impl Method {
     /// Every method, in the order they are listed in help texts.
-    pub const ALL: &'static [Method] = &[Method::SigConnect2d];
+    pub const ALL: &'static [Method] = &[Method::SigConnect2d, Method::Connect2d];
 
     /// The kebab-case name.
     pub fn name(self) -> &'static str {
         match self {
             Method::SigConnect2d => "sig-connect2d",
+            Method::Connect2d => "connect2d",
         }
     }
 }

@@ -26,5 +26,6 @@ use crate::{Point, Result};
 pub fn reconstruct(points: &[Point], options: &Options) -> Result<Reconstruction> {
     match options.method {
         Method::SigConnect2d => sig_connect2d(points, options.leaf_elimination),
+        Method::Connect2d => crate::baselines::connect2d::connect2d(points),
     }
 }
