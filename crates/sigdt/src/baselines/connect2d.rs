@@ -20,7 +20,7 @@ use crate::delaunay::Triangulation;
 use crate::proximity::{emst::emst_mask, leaf_elimination::eliminate_leaves};
 use crate::reconstruct::degenerate::degenerate_result;
 use crate::reconstruct::inflate_sculpt::inflate_and_sculpt;
-use crate::{Point, Reconstruction, Result, Stats};
+use crate::{Point, Reconstruction, Result};
 
 /// Reconstructs `points` with CONNECT2D.
 pub fn connect2d(points: &[Point]) -> Result<Reconstruction> {
@@ -35,14 +35,7 @@ pub fn connect2d_on(dt: &Triangulation) -> Reconstruction {
     }
     let mut graph = emst_mask(dt);
     let leaf_edges_added = eliminate_leaves(dt, &mut graph);
-    let stats = Stats {
-        points: dt.input_len(),
-        distinct_points: dt.num_vertices(),
-        graph_edges: graph.len(),
-        leaf_edges_added,
-        ..Stats::default()
-    };
-    inflate_and_sculpt(dt, &graph, stats)
+    inflate_and_sculpt(dt, &graph, leaf_edges_added)
 }
 
 #[cfg(test)]

@@ -9,13 +9,20 @@ use super::sculpt::sculpt;
 use crate::delaunay::Triangulation;
 use crate::graph::EdgeMask;
 
-/// Reconstruction of a proper triangulation from initial graph `graph`; `stats` already
-/// carries the graph-building counts.
+/// Reconstruction of a proper triangulation from initial graph `graph`, to which
+/// `leaf_edges_added` leaf edges were added.
 pub fn inflate_and_sculpt(
     dt: &Triangulation,
     graph: &EdgeMask,
-    mut stats: Stats,
+    leaf_edges_added: usize,
 ) -> Reconstruction {
+    let mut stats = Stats {
+        points: dt.input_len(),
+        distinct_points: dt.num_vertices(),
+        graph_edges: graph.len(),
+        leaf_edges_added,
+        ..Stats::default()
+    };
     let mut bd = Boundary::from_graph(dt, graph);
     inflate(&mut bd, graph, &mut stats);
     sculpt(&mut bd, &mut stats);

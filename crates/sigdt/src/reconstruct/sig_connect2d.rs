@@ -21,7 +21,7 @@
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 use super::degenerate::degenerate_result;
 use super::inflate_sculpt::inflate_and_sculpt;
-use super::result::{Reconstruction, Stats};
+use super::result::Reconstruction;
 use crate::delaunay::Triangulation;
 use crate::proximity::{
     leaf_elimination::eliminate_leaves_with_degrees, sigdt::sigdt_with_degrees,
@@ -42,12 +42,5 @@ pub fn sig_connect2d_on(dt: &Triangulation, leaf_elimination: bool) -> Reconstru
     let (mut graph, degree) = sigdt_with_degrees(dt);
     let leaf_edges_added =
         if leaf_elimination { eliminate_leaves_with_degrees(dt, &mut graph, degree) } else { 0 };
-    let stats = Stats {
-        points: dt.input_len(),
-        distinct_points: dt.num_vertices(),
-        graph_edges: graph.len(),
-        leaf_edges_added,
-        ..Stats::default()
-    };
-    inflate_and_sculpt(dt, &graph, stats)
+    inflate_and_sculpt(dt, &graph, leaf_edges_added)
 }
