@@ -17,7 +17,7 @@ impl Triangulation {
         let scaling = Scaling::for_points(points)?;
         let scaled = |i: u32| scaling.apply(points[i as usize]);
         match first_triangle(points.len(), scaled) {
-            Some(seed) => proper(points.len(), scaled, seed),
+            Some(seed) => proper(points, scaled, scaling, seed),
             None => Ok(on_a_line(points.len(), scaled)),
         }
     }
@@ -71,7 +71,13 @@ fn on_a_line(n: usize, p: impl Fn(u32) -> Point) -> Triangulation {
     }
 }
 
-fn proper(n: usize, p: impl Fn(u32) -> Point, seed: [u32; 3]) -> Result<Triangulation> {
+fn proper(
+    input: &[Point],
+    p: impl Fn(u32) -> Point,
+    scaling: Scaling,
+    seed: [u32; 3],
+) -> Result<Triangulation> {
+    let n = input.len();
     let mut dt: DelaunayTriangulation<Point2<f64>> =
         DelaunayTriangulation::with_capacity(n, 3 * n, 2 * n + 1);
     let mut input_index: Vec<u32> = Vec::with_capacity(n);
@@ -80,8 +86,11 @@ fn proper(n: usize, p: impl Fn(u32) -> Point, seed: [u32; 3]) -> Result<Triangul
     let mut insert = |i: u32, dt: &mut DelaunayTriangulation<Point2<f64>>| -> Result<()> {
         let [x, y] = p(i);
         let before = dt.num_vertices();
+        // Unreachable after `Scaling::for_points`; reported with the caller's numbers.
         let handle = dt.insert_with_hint(Point2::new(x, y), hint).map_err(|_| {
-            Error::CoordinateRange { index: i as usize, value: x, largest: f64::NAN }
+            let raw = input[i as usize];
+            let value = if raw[0].abs() <= raw[1].abs() { raw[0] } else { raw[1] };
+            Error::CoordinateRange { index: i as usize, value, largest: scaling.largest() }
         })?;
         if dt.num_vertices() == before {
             // Exact duplicate: keep the lowest input index as the representative.

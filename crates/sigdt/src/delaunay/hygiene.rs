@@ -14,9 +14,10 @@ const MIN_ALLOWED: f64 = spade::MIN_ALLOWED_VALUE;
 const TARGET_EXPONENT: i32 = 30;
 
 /// The exact power-of-two scaling applied to the input.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Scaling {
     exponent: i32,
+    largest: f64,
 }
 
 impl Scaling {
@@ -33,7 +34,7 @@ impl Scaling {
             largest = largest.max(x.abs()).max(y.abs());
         }
         let exponent = if largest == 0.0 { 0 } else { TARGET_EXPONENT - floor_log2(largest) };
-        let scaling = Scaling { exponent };
+        let scaling = Scaling { exponent, largest };
         for (index, p) in points.iter().enumerate() {
             for (raw, c) in p.iter().zip(scaling.apply(*p)) {
                 // Judge by the raw value: a tiny coordinate may scale to exactly 0.0.
@@ -43,6 +44,11 @@ impl Scaling {
             }
         }
         Ok(scaling)
+    }
+
+    /// The largest absolute input coordinate.
+    pub fn largest(self) -> f64 {
+        self.largest
     }
 
     /// The scaled point, with `-0.0` replaced by `0.0`.

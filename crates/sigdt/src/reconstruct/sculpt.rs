@@ -41,10 +41,10 @@ pub fn sculpt(bd: &mut Boundary<'_>, stats: &mut Stats) {
     }
     while bd.interior > 0 {
         let Some(c) = queue.pop() else { break };
-        if candidate(bd, c.t).map(|(_, cost)| cost) != Some(c.cost) {
+        let Some((ab, cost)) = candidate(bd, c.t) else { continue };
+        if cost != c.cost {
             continue;
         }
-        let (ab, _) = candidate(bd, c.t).expect("checked above");
         let dt = bd.dt;
         bd.inside[c.t as usize] = false;
         bd.edges.set(dt, ab, false);
