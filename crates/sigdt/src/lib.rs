@@ -22,6 +22,7 @@ pub mod baselines;
 pub mod curves;
 pub mod delaunay;
 pub mod error;
+pub mod eval;
 pub mod geometry;
 pub mod graph;
 pub mod io;
