@@ -1,8 +1,8 @@
 //! Checkers shared by every test layer (unit, property, golden, CLI, fuzz).
 //!
 //! [`check_reconstruction`] states the output invariants every method must keep: edges join
-//! two distinct valid indices and are sorted and unique; loops are closed, simple, disjoint
-//! and agree with the edges; a manifold status means every distinct point has degree 2; no
+//! two distinct valid indices and are sorted and unique; loops and paths are simple and
+//! disjoint (paths may share a junction end in a network) and agree with the edges; a manifold status means every distinct point has degree 2; no
 //! two output edges cross.
 use crate::geometry::{segments_cross, Point};
 use crate::{Edge, Reconstruction, Status};
@@ -24,27 +24,44 @@ pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<()
             return Err(format!("edge [{i}, {j}] joins two equal points"));
         }
     }
+    // Every vertex is on at most one chain, once, except that in a network (junctions) a
+    // junction ends several paths.
+    let network = rec.status == Status::Network;
     let mut from_chains: Vec<Edge> = Vec::new();
     let mut on_chain = vec![false; n];
+    let mut path_end = vec![false; n];
     for (closed, chain) in
         rec.loops.iter().map(|l| (true, l)).chain(rec.paths.iter().map(|p| (false, p)))
     {
         if chain.len() < if closed { 3 } else { 2 } {
             return Err(format!("chain {chain:?} is too short"));
         }
-        for &v in chain {
-            if v >= n || std::mem::replace(&mut on_chain[v], true) {
-                return Err(format!("vertex {v} is out of range or on two chains / twice on one"));
+        let k = chain.len();
+        for (a, &v) in chain.iter().enumerate() {
+            if v >= n {
+                return Err(format!("vertex {v} is out of range"));
+            }
+            if network && !closed && (a == 0 || a == k - 1) {
+                path_end[v] = true;
+            } else if std::mem::replace(&mut on_chain[v], true) {
+                return Err(format!("vertex {v} is on two chains, or twice on one"));
             }
         }
-        let k = chain.len();
         let links = if closed { k } else { k - 1 };
         from_chains.extend((0..links).map(|a| {
             let (x, y) = (chain[a], chain[(a + 1) % k]);
             [x.min(y), x.max(y)]
         }));
     }
+    if let Some(v) = (0..n).find(|&v| path_end[v] && on_chain[v]) {
+        return Err(format!("vertex {v} ends a path and lies inside a chain"));
+    }
     from_chains.sort_unstable();
+    if network {
+        // A path that closes through a junction lists the junction at both ends, which
+        // repeats no edge; paths between the same two junctions never share an edge.
+        from_chains.dedup();
+    }
     if from_chains != rec.edges {
         return Err("edges differ from the edges of the loops and paths".into());
     }

@@ -28,6 +28,27 @@ const FLOORS_CONNECT2D: &[(&str, usize)] = &[
     ("bezier", 100),
     ("large", 2),
 ];
+/// CRAWL and PEEL (graph filters; open and multiple curves count too).
+const FLOORS_CRAWL: &[(&str, usize)] = &[
+    ("manifold", 99),
+    ("manifold eps<1", 80),
+    ("sharp", 39),
+    ("open", 24),
+    ("multiple", 26),
+    ("noisy", 35),
+    ("bezier", 100),
+    ("large", 2),
+];
+const FLOORS_PEEL: &[(&str, usize)] = &[
+    ("manifold", 104),
+    ("manifold eps<1", 82),
+    ("sharp", 33),
+    ("open", 51),
+    ("multiple", 26),
+    ("noisy", 35),
+    ("bezier", 100),
+    ("large", 2),
+];
 const FLOORS_NO_LEAF_ELIMINATION: &[(&str, usize)] = &[
     ("manifold", 92),
     ("manifold eps<1", 72),
@@ -138,4 +159,16 @@ fn golden_rates_without_leaf_elimination() {
 fn golden_rates_connect2d() {
     let options = Options { method: Method::Connect2d, ..Options::default() };
     check_floors(&score(options), FLOORS_CONNECT2D, "CONNECT2D (baseline)");
+}
+
+#[test]
+fn golden_rates_crawl() {
+    let options = Options { method: Method::Crawl, ..Options::default() };
+    check_floors(&score(options), FLOORS_CRAWL, "CRAWL (baseline)");
+}
+
+#[test]
+fn golden_rates_peel() {
+    let options = Options { method: Method::Peel, ..Options::default() };
+    check_floors(&score(options), FLOORS_PEEL, "PEEL (baseline)");
 }

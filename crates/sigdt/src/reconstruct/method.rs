@@ -14,17 +14,26 @@ pub enum Method {
     /// CONNECT2D [OM13](https://doi.org/10.1111/cgf.12227): the same inflating and sculpting
     /// started from BC₀ (EMST plus leaf edges). Ignores `leaf_elimination`.
     Connect2d,
+    /// CRAWL (Parakkat, Muthuganapathy 2016): grow paths from nearest-neighbour seeds by
+    /// the nearest unvisited Delaunay neighbour.
+    Crawl,
+    /// PEEL (Parakkat, Methirumangalath, Muthuganapathy 2018): drop every triangle's longest
+    /// edge, then filter.
+    Peel,
 }
 
 impl Method {
     /// Every method, in the order they are listed in help texts.
-    pub const ALL: &'static [Method] = &[Method::SigConnect2d, Method::Connect2d];
+    pub const ALL: &'static [Method] =
+        &[Method::SigConnect2d, Method::Connect2d, Method::Crawl, Method::Peel];
 
     /// The kebab-case name.
     pub fn name(self) -> &'static str {
         match self {
             Method::SigConnect2d => "sig-connect2d",
             Method::Connect2d => "connect2d",
+            Method::Crawl => "crawl",
+            Method::Peel => "peel",
         }
     }
 }
@@ -76,6 +85,6 @@ mod tests {
         for &m in Method::ALL {
             assert_eq!(m.to_string().parse::<Method>().unwrap(), m);
         }
-        assert!("crust2".parse::<Method>().unwrap_err().to_string().contains("sig-connect2d"));
+        assert!("crust3".parse::<Method>().unwrap_err().to_string().contains("sig-connect2d"));
     }
 }

@@ -3,6 +3,7 @@
 pub mod boundary;
 pub mod degenerate;
 pub mod extract;
+pub mod from_edges;
 pub mod inflate;
 pub mod inflate_sculpt;
 pub mod method;
@@ -16,7 +17,10 @@ pub use method::{Method, Options};
 pub use result::{Reconstruction, Stats, Status};
 pub use sig_connect2d::sig_connect2d;
 
+use crate::baselines::{connect2d::connect2d_on, crawl::crawl, peel::peel};
+use crate::delaunay::Triangulation;
 use crate::{Point, Result};
+use sig_connect2d::sig_connect2d_on;
 
 /// Reconstructs the curve(s) through `points` with the method and options in `options`.
 ///
@@ -24,8 +28,19 @@ use crate::{Point, Result};
 /// errors), then runs the method. Degenerate but valid input has a documented result; see
 /// [`Status`].
 pub fn reconstruct(points: &[Point], options: &Options) -> Result<Reconstruction> {
-    match options.method {
-        Method::SigConnect2d => sig_connect2d(points, options.leaf_elimination),
-        Method::Connect2d => crate::baselines::connect2d::connect2d(points),
-    }
+    let dt = Triangulation::new(points)?;
+    Ok(reconstruct_on(&dt, options))
+}
+
+/// [`reconstruct`] on an existing triangulation of the points.
+pub fn reconstruct_on(dt: &Triangulation, options: &Options) -> Reconstruction {
+    let filter: fn(&Triangulation) -> Vec<[u32; 2]> = match options.method {
+        Method::SigConnect2d => return sig_connect2d_on(dt, options.leaf_elimination),
+        Method::Connect2d => return connect2d_on(dt),
+        Method::Crawl => crawl,
+        Method::Peel => peel,
+    };
+    // The graph filters: the same degenerate results, then their edges read as chains.
+    degenerate::degenerate_result(dt)
+        .unwrap_or_else(|| from_edges::from_vertex_pairs(dt, filter(dt), Stats::default()))
 }

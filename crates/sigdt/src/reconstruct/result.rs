@@ -16,7 +16,9 @@ pub struct Reconstruction {
     /// starts at its smallest index; loops are sorted by that first index.
     pub loops: Vec<Vec<usize>>,
     /// Open paths, each an ordered list of vertices starting at its smaller end; sorted.
-    /// SIG-CONNECT2D only produces one, for collinear input or two distinct points.
+    /// SIG-CONNECT2D only produces one, for collinear input or two distinct points; graph
+    /// filters such as CRUST produce them for open curves, and at junctions
+    /// ([`Status::Network`]) paths end at the junction (a path may start and end there).
     pub paths: Vec<Vec<usize>>,
     /// How the run ended.
     pub status: Status,
@@ -44,6 +46,13 @@ pub enum Status {
         /// The points not on any loop.
         left_out: Vec<usize>,
     },
+    /// The edges form vertex-disjoint loops and open paths (every point has at most two
+    /// edges), but not closed loops through every distinct point: some paths are open or
+    /// some points have no edge. Methods that filter a graph (CRUST and its kin) return this.
+    Curves,
+    /// Some point has three or more edges (a junction). Paths run between points whose
+    /// number of edges is not two; a path may start and end at the same junction.
+    Network,
     /// All distinct points lie on one line: the result is the path through them in their
     /// order along the line.
     Collinear,
@@ -58,13 +67,15 @@ impl Status {
         matches!(self, Status::Polygon | Status::Polygons)
     }
 
-    /// A short kebab-case name: `polygon`, `polygons`, `sculpting-stuck`, `collinear`,
-    /// `too-few-points`.
+    /// A short kebab-case name: `polygon`, `polygons`, `sculpting-stuck`, `curves`,
+    /// `network`, `collinear`, `too-few-points`.
     pub fn name(&self) -> &'static str {
         match self {
             Status::Polygon => "polygon",
             Status::Polygons => "polygons",
             Status::SculptingStuck { .. } => "sculpting-stuck",
+            Status::Curves => "curves",
+            Status::Network => "network",
             Status::Collinear => "collinear",
             Status::TooFewPoints => "too-few-points",
         }
@@ -81,6 +92,8 @@ impl std::fmt::Display for Status {
                 "sculpting got stuck: {} point(s) left inside the boundary",
                 left_out.len()
             ),
+            Status::Curves => f.write_str("loops and open paths, not all points on loops"),
+            Status::Network => f.write_str("edges meet at junctions (a point with 3+ edges)"),
             Status::Collinear => f.write_str("all points are collinear: one open path"),
             Status::TooFewPoints => f.write_str("fewer than three distinct points"),
         }
