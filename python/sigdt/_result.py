@@ -9,7 +9,15 @@ import numpy as np
 __all__ = ["Reconstruction"]
 
 #: Names of :attr:`Reconstruction.status`, in the order the core defines them.
-STATUSES = ("polygon", "polygons", "sculpting-stuck", "collinear", "too-few-points")
+STATUSES = (
+    "polygon",
+    "polygons",
+    "sculpting-stuck",
+    "curves",
+    "network",
+    "collinear",
+    "too-few-points",
+)
 
 
 def _split(flat: np.ndarray, offsets: np.ndarray) -> list[np.ndarray]:
@@ -30,10 +38,13 @@ class Reconstruction:
         Closed loops, each an int64 array of point indices in order (the closing edge is
         implied), counter-clockwise, starting at its smallest index; sorted.
     paths : list of numpy.ndarray
-        Open paths (only for collinear input or two distinct points).
+        Open paths: for collinear input or two distinct points, and from the graph-filter
+        methods (``"crawl"``, ``"peel"``, ...) for open curves; with status ``"network"``
+        paths end at junctions (a path may start and end at the same junction).
     status : str
-        ``"polygon"``, ``"polygons"``, ``"sculpting-stuck"``, ``"collinear"`` or
-        ``"too-few-points"``.
+        ``"polygon"``, ``"polygons"``, ``"sculpting-stuck"``, ``"curves"`` (loops and open
+        paths, not every point on a loop), ``"network"`` (some point has 3 or more edges),
+        ``"collinear"`` or ``"too-few-points"``.
     left_out : numpy.ndarray
         int64 indices of the points no loop reaches (only with ``"sculpting-stuck"``).
     duplicates : numpy.ndarray

@@ -13,7 +13,7 @@ import numpy as np
 import sigdt
 
 #: Statuses a Reconstruction may report.
-STATUSES = {"polygon", "polygons", "sculpting-stuck", "collinear", "too-few-points"}
+STATUSES = set(sigdt._result.STATUSES)  # every status the core defines
 
 
 def blob(

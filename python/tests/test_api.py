@@ -410,7 +410,17 @@ def test_version_matches_the_package_metadata(repo_root: Path):
 
 
 def test_methods_and_graph_kinds():
-    assert sigdt.METHODS == ["sig-connect2d", "connect2d"]
+    assert sigdt.METHODS == [
+        "sig-connect2d",
+        "connect2d",
+        "crust",
+        "nn-crust",
+        "hnn-crust",
+        "crawl",
+        "peel",
+    ]
     assert sigdt.GRAPH_KINDS == ["dt", "sig", "sigdt", "sigdt2", "emst", "knn"]
     for method in sigdt.METHODS:
-        assert sigdt.reconstruct(SQUARE, method=method).status == "polygon"
+        rec = sigdt.reconstruct(SQUARE, method=method)
+        # CRAWL closes no cycle shorter than 6 points; the square stays an open path.
+        assert rec.status == ("curves" if method == "crawl" else "polygon"), method

@@ -28,26 +28,14 @@ const FLOORS_CONNECT2D: &[(&str, usize)] = &[
     ("bezier", 100),
     ("large", 2),
 ];
-/// CRAWL and PEEL (graph filters; open and multiple curves count too).
-const FLOORS_CRAWL: &[(&str, usize)] = &[
-    ("manifold", 99),
-    ("manifold eps<1", 80),
-    ("sharp", 39),
-    ("open", 24),
-    ("multiple", 26),
-    ("noisy", 35),
-    ("bezier", 100),
-    ("large", 2),
-];
-const FLOORS_PEEL: &[(&str, usize)] = &[
-    ("manifold", 104),
-    ("manifold eps<1", 82),
-    ("sharp", 33),
-    ("open", 51),
-    ("multiple", 26),
-    ("noisy", 35),
-    ("bezier", 100),
-    ("large", 2),
+/// The graph filters (their results may be open or several curves, so those count too):
+/// floors for manifold, manifold eps<1, sharp, open, multiple, noisy, outliers.
+const FLOORS_FILTERS: &[(Method, [usize; 7])] = &[
+    (Method::Crust, [104, 82, 34, 49, 29, 34, 8]),
+    (Method::NnCrust, [103, 82, 27, 25, 19, 29, 0]),
+    (Method::HnnCrust, [103, 81, 34, 53, 26, 35, 11]),
+    (Method::Crawl, [99, 80, 39, 24, 26, 35, 13]),
+    (Method::Peel, [104, 82, 33, 51, 26, 35, 10]),
 ];
 const FLOORS_NO_LEAF_ELIMINATION: &[(&str, usize)] = &[
     ("manifold", 92),
@@ -162,13 +150,13 @@ fn golden_rates_connect2d() {
 }
 
 #[test]
-fn golden_rates_crawl() {
-    let options = Options { method: Method::Crawl, ..Options::default() };
-    check_floors(&score(options), FLOORS_CRAWL, "CRAWL (baseline)");
-}
-
-#[test]
-fn golden_rates_peel() {
-    let options = Options { method: Method::Peel, ..Options::default() };
-    check_floors(&score(options), FLOORS_PEEL, "PEEL (baseline)");
+fn golden_rates_graph_filters() {
+    const CATEGORIES: [&str; 7] =
+        ["manifold", "manifold eps<1", "sharp", "open", "multiple", "noisy", "outliers"];
+    for &(method, floors) in FLOORS_FILTERS {
+        let mut floors: Vec<(&str, usize)> = CATEGORIES.into_iter().zip(floors).collect();
+        floors.extend([("bezier", 100), ("large", 2)]);
+        let options = Options { method, ..Options::default() };
+        check_floors(&score(options), &floors, &format!("{method} (baseline)"));
+    }
 }

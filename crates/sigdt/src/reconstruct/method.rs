@@ -14,6 +14,14 @@ pub enum Method {
     /// CONNECT2D [OM13](https://doi.org/10.1111/cgf.12227): the same inflating and sculpting
     /// started from BC₀ (EMST plus leaf edges). Ignores `leaf_elimination`.
     Connect2d,
+    /// CRUST (Amenta, Bern, Eppstein 1998): Delaunay edges between samples that survive
+    /// adding the Voronoi vertices.
+    Crust,
+    /// NN-CRUST (Dey, Kumar 1999): nearest neighbours plus half neighbours.
+    NnCrust,
+    /// HNN-CRUST (Ohrhallinger, Mitchell, Wimmer 2016): mutual nearest and half-plane
+    /// neighbours, without a triangulation.
+    HnnCrust,
     /// CRAWL (Parakkat, Muthuganapathy 2016): grow paths from nearest-neighbour seeds by
     /// the nearest unvisited Delaunay neighbour.
     Crawl,
@@ -24,14 +32,24 @@ pub enum Method {
 
 impl Method {
     /// Every method, in the order they are listed in help texts.
-    pub const ALL: &'static [Method] =
-        &[Method::SigConnect2d, Method::Connect2d, Method::Crawl, Method::Peel];
+    pub const ALL: &'static [Method] = &[
+        Method::SigConnect2d,
+        Method::Connect2d,
+        Method::Crust,
+        Method::NnCrust,
+        Method::HnnCrust,
+        Method::Crawl,
+        Method::Peel,
+    ];
 
     /// The kebab-case name.
     pub fn name(self) -> &'static str {
         match self {
             Method::SigConnect2d => "sig-connect2d",
             Method::Connect2d => "connect2d",
+            Method::Crust => "crust",
+            Method::NnCrust => "nn-crust",
+            Method::HnnCrust => "hnn-crust",
             Method::Crawl => "crawl",
             Method::Peel => "peel",
         }

@@ -17,7 +17,10 @@ pub use method::{Method, Options};
 pub use result::{Reconstruction, Stats, Status};
 pub use sig_connect2d::sig_connect2d;
 
-use crate::baselines::{connect2d::connect2d_on, crawl::crawl, peel::peel};
+use crate::baselines::{
+    connect2d::connect2d_on, crawl::crawl, crust::crust, hnn_crust::hnn_crust, nn_crust::nn_crust,
+    peel::peel,
+};
 use crate::delaunay::Triangulation;
 use crate::{Point, Result};
 use sig_connect2d::sig_connect2d_on;
@@ -37,6 +40,9 @@ pub fn reconstruct_on(dt: &Triangulation, options: &Options) -> Reconstruction {
     let filter: fn(&Triangulation) -> Vec<[u32; 2]> = match options.method {
         Method::SigConnect2d => return sig_connect2d_on(dt, options.leaf_elimination),
         Method::Connect2d => return connect2d_on(dt),
+        Method::Crust => crust,
+        Method::NnCrust => nn_crust,
+        Method::HnnCrust => hnn_crust,
         Method::Crawl => crawl,
         Method::Peel => peel,
     };
