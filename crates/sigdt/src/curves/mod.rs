@@ -10,6 +10,9 @@
 //! - [`random_closed_curve`]: a 12-harmonic blob sampled uniformly, for benchmarks.
 //! - [`spiral_band`]: a long thin coiled band, the hard case for Delaunay insertion order.
 //! - [`regular_polygon`]: `k` points on a circle.
+//! - [`read_svg_paths`]: cubic [`BezierPath`]s from an SVG file, and [`eps_sample`]: their
+//!   ε-sampling with a start offset, the sampler of the paper's Bézier experiment.
+//! - [`uniform_noise`], [`lfs_noise`] and [`add_outliers`]: perturbed copies of a sample.
 //!
 //! Arc lengths are integrated with 5-point Gauss–Legendre on a grid of 4096 intervals and
 //! inverted by Newton's method, so equal spacing is equal up to rounding whatever `n` is.
@@ -17,11 +20,19 @@
 //! \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 
 mod arc_length;
+mod bezier;
 mod blob;
+mod eps_sampling;
+mod noise;
 mod polygon;
 mod spiral;
 
+pub use bezier::{parse_svg_paths, read_svg_paths, BezierPath};
 pub use blob::{random_closed_curve, Blob, Modulation};
+pub use eps_sampling::{
+    eps_sample, eps_sample_with_frames, lfs, DenseCurve, FramedSample, DENSE_STEPS,
+};
+pub use noise::{add_outliers, lfs_noise, uniform_noise, MAX_OUTLIER_FRACTION};
 pub use polygon::regular_polygon;
 pub use spiral::spiral_band;
 
