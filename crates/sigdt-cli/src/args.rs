@@ -11,6 +11,10 @@ use clap::{Args, CommandFactory, Parser, Subcommand};
 use sigdt::io::OutputFormat;
 use sigdt::Method;
 
+use crate::args_bench::method_parser;
+pub use crate::args_bench::{BenchArgs, EvalArgs, WorkerArgs};
+pub use crate::args_generate::{PerturbArgs, SampleArgs, SweepArgs};
+
 /// The input formats, shown in `sigdt --help` and `sigdt <command> --help`.
 const INPUT_FORMATS: &str = "\
 Input (INPUT is a file, or '-' for standard input):
@@ -30,6 +34,8 @@ Result status (printed with --verbose; also in geojson's properties):
   polygons         several disjoint closed simple polygons through every distinct point
   sculpting-stuck  sculpting found no candidate while points were still inside: the loops
                    are simple but miss those points (a warning goes to stderr)
+  curves           (graph-filter methods) loops and open paths, not all points on loops
+  network          (graph-filter methods) some point has 3 or more edges (a junction)
   collinear        all points on one line: the open path through them in line order
   too-few-points   fewer than 3 distinct points: 2 give their edge, 0 or 1 give nothing
 Exact duplicate points get no edges: the lowest-index copy stands for all of them.
@@ -78,6 +84,23 @@ pub enum Command {
     /// Write a proximity graph of the points, one edge 'i j' per line.
     #[command(after_help = INPUT_FORMATS)]
     Graph(GraphArgs),
+    /// Run methods over every case of a labelled folder and write a report (Markdown
+    /// table in the layout of the paper's Table 2, CSV, SVG charts).
+    Bench(BenchArgs),
+    /// Score one reconstruction against ground truth: exact, missing/extra edges, RMSE,
+    /// Hausdorff, symmetric area difference, and the sample's graph-based epsilon.
+    Eval(EvalArgs),
+    /// Sample a cubic Bézier path of an SVG file so that every curve point is within
+    /// eps x lfs of a sample (the paper's eps-sampling), optionally with lfs noise.
+    Sample(SampleArgs),
+    /// Add uniform noise (fraction of the bounding-box diagonal) or outliers to points.
+    Perturb(PerturbArgs),
+    /// RMSE and exact rate of every method against noise, outliers, lfs noise or eps,
+    /// with charts (the paper's Figures 14, 16, 17, 18).
+    Sweep(SweepArgs),
+    /// Internal: one method on one case, for `sigdt bench`.
+    #[command(hide = true)]
+    BenchWorker(WorkerArgs),
 }
 
 /// `sigdt reconstruct`.
@@ -147,12 +170,6 @@ pub fn parse() -> Cli {
 fn format_parser() -> impl TypedValueParser<Value = OutputFormat> {
     let names = OutputFormat::ALL.iter().map(|f| f.name());
     PossibleValuesParser::new(names).try_map(|s| s.parse::<OutputFormat>())
-}
-
-/// `--method` values, listed in the help and checked by clap.
-fn method_parser() -> impl TypedValueParser<Value = Method> {
-    let names = Method::ALL.iter().map(|m| m.name());
-    PossibleValuesParser::new(names).try_map(|s| s.parse::<Method>())
 }
 
 #[cfg(test)]

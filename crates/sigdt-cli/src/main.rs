@@ -5,8 +5,13 @@
 //! error (reported by clap).
 
 mod args;
+mod args_bench;
+mod args_generate;
+mod bench;
+mod generate;
 mod output;
 mod run;
+mod sweep;
 
 use std::process::ExitCode;
 

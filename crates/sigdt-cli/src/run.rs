@@ -16,6 +16,12 @@ pub fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Reconstruct(args) => reconstruct(&args),
         Command::Graph(args) => graph(&args),
+        Command::Bench(args) => crate::bench::bench(&args),
+        Command::Eval(args) => crate::bench::evaluate(&args),
+        Command::BenchWorker(args) => crate::bench::worker(&args),
+        Command::Sample(args) => crate::generate::sample(&args),
+        Command::Perturb(args) => crate::generate::perturb(&args),
+        Command::Sweep(args) => crate::sweep::sweep(&args),
     }
 }
 
@@ -63,7 +69,7 @@ fn graph(args: &GraphArgs) -> Result<()> {
 }
 
 /// The points of `input`, a file or `-` for standard input.
-fn read_input(input: &Path) -> Result<Vec<Point>> {
+pub fn read_input(input: &Path) -> Result<Vec<Point>> {
     if is_dash(input) {
         Ok(sigdt::io::parse_points(io::stdin().lock(), "<stdin>", None)?)
     } else {

@@ -15,6 +15,7 @@ use std::process::{Command, Stdio};
 
 use tempfile::TempDir;
 
+mod bench;
 mod errors;
 mod files;
 mod results;

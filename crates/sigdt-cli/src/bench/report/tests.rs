@@ -1,0 +1,179 @@
+//! The report on a small synthetic benchmark: 2 methods, 3 categories, a failure, a time-out.
+use super::write_report;
+use crate::bench::chart::assert_well_formed;
+use crate::bench::record::{read_results_csv, BenchData, Case, Entry, Outcome, OverlapStat, Run};
+use std::fs;
+
+fn case(name: &str, category: &str, n_points: usize, epsilon: Option<f64>) -> Case {
+    Case { name: name.into(), category: category.into(), n_points, epsilon, graph_epsilon: None }
+}
+
+fn done(exact: bool, time_ms: f64, rmse: Option<f64>) -> Outcome {
+    Outcome::Done(Run {
+        exact,
+        status: "manifold".into(),
+        edges: 10,
+        missing: usize::from(!exact),
+        extra: 0,
+        time_ms,
+        rmse,
+        hausdorff: rmse.map(|r| 2.0 * r),
+        symdiff: Some(0.0),
+    })
+}
+
+fn sample() -> BenchData {
+    let cases = vec![
+        case("m1", "manifold", 100, Some(0.5)),
+        case("m2", "manifold", 200, Some(0.8)),
+        case("m3", "manifold", 300, Some(1.5)),
+        case("s1", "sharp", 50, None),
+        case("s2", "sharp", 60, None),
+        case("o1", "open", 9991, None),
+    ];
+    let sig = [
+        done(true, 1.0, Some(0.0)),
+        done(true, 2.0, Some(0.0)),
+        done(false, 3.0, Some(0.03)),
+        done(true, 0.5, None),
+        Outcome::Failed("sculpt | panicked\nat line 3".into()),
+        Outcome::TimedOut(10.0),
+    ];
+    let crust = [
+        done(true, 0.5, Some(0.0)),
+        done(false, 0.5, Some(0.01)),
+        done(false, 0.5, Some(0.01)),
+        done(true, 0.25, Some(0.0)),
+        done(true, 0.25, Some(0.0)),
+        done(false, 39.0, Some(0.1)),
+    ];
+    let mut entries = Vec::new();
+    for (method, outcomes) in [("sig-connect2d", sig), ("crust", crust)] {
+        for (case, outcome) in outcomes.into_iter().enumerate() {
+            entries.push(Entry { case, method: method.into(), outcome });
+        }
+    }
+    BenchData {
+        data_dir: "/data/curves".into(),
+        command: "sigdt bench /data/curves --method all --out out".into(),
+        machine: "test machine, 2 cores".into(),
+        time_limit_s: 10.0,
+        methods: vec!["sig-connect2d".into(), "crust".into()],
+        cases,
+        entries,
+        overlap: vec![OverlapStat {
+            name: "recon in SIGDT".into(),
+            mean_percent: 99.24,
+            sets_contained_percent: Some(97.0),
+            paper_percent: Some(99.9),
+        }],
+        eps_threshold: 1.0,
+    }
+}
+
+fn report(data: &BenchData) -> (String, Vec<String>, tempfile::TempDir) {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let paths = write_report(data, &out).unwrap();
+    let names =
+        paths.iter().map(|p| p.file_name().unwrap().to_string_lossy().into_owned()).collect();
+    for p in &paths {
+        assert!(p.starts_with(&out) && p.is_file(), "{p:?}");
+        if p.extension().is_some_and(|e| e == "svg") {
+            let svg = fs::read_to_string(p).unwrap();
+            assert_well_formed(&svg);
+            assert!(!svg.contains("NaN") && !svg.contains("inf"), "{p:?}");
+        }
+    }
+    (fs::read_to_string(out.join("report.md")).unwrap(), names, dir)
+}
+
+fn row<'a>(md: &'a str, start: &str) -> &'a str {
+    md.lines().find(|l| l.starts_with(start)).unwrap_or_else(|| panic!("no row {start}\n{md}"))
+}
+
+#[test]
+fn writes_every_file() {
+    let (_, names, dir) = report(&sample());
+    let expected = ["report.md", "results.csv", "accuracy.svg", "accuracy_eps.svg", "runtime.svg"];
+    assert_eq!(names, expected);
+    let csv = fs::read(dir.path().join("out/results.csv")).unwrap();
+    let back = read_results_csv(&csv[..]).unwrap();
+    assert_eq!((back.entries, back.cases), (sample().entries, sample().cases));
+    let accuracy = fs::read_to_string(dir.path().join("out/accuracy.svg")).unwrap();
+    assert!(accuracy.contains("sig-connect2d") && accuracy.contains("manifold ε &lt; 1"));
+}
+
+#[test]
+fn exact_table_follows_table_2() {
+    let (md, _, _) = report(&sample());
+    let header = row(&md, "| Method |");
+    for column in
+        ["| manifold |", "| sharp |", "| open |", "| manifold ε < 1 |", "`o1` (n = 9991) ms"]
+    {
+        assert!(header.contains(column), "{column} not in {header}");
+    }
+    let sig = row(&md, "| `sig-connect2d` |");
+    let crust = row(&md, "| `crust` |");
+    for cell in ["**66.7 % (2/3)**", "| 50.0 % (1/2) |", "| 0.0 % (0/1) |", "**100.0 % (2/2)**"] {
+        assert!(sig.contains(cell), "{cell} not in {sig}");
+    }
+    assert!(sig.contains("> 10000 (time-out)") && sig.ends_with("| 1 / 1 |"), "{sig}");
+    for cell in
+        ["| 33.3 % (1/3) |", "**100.0 % (2/2)**", "| 50.0 % (1/2) |", "| 39.0 |", "| 0 / 0 |"]
+    {
+        assert!(crust.contains(cell), "{cell} not in {crust}");
+    }
+    // Mean manifold runtime: 2.00 ms against 0.50 ms, the smaller in bold.
+    assert!(sig.contains("| 2.00 |") && crust.contains("| **0.50** |"), "{sig}\n{crust}");
+}
+
+#[test]
+fn header_paper_table_and_other_sections() {
+    let (md, _, _) = report(&sample());
+    assert!(md.starts_with("# Benchmark report\n"));
+    assert!(md.contains("- Command: `sigdt bench /data/curves --method all --out out`"));
+    assert!(md.contains("- Time limit: 10 s per run"));
+    assert!(md.contains("| manifold | 3 | 100–300 |") && md.contains("| sharp | 2 | 50–60 |"));
+    let paper = row(&md, "| SIG-CONNECT2D |");
+    assert!(paper.contains("| 91.5 % |") && paper.ends_with("| `sig-connect2d` |"), "{paper}");
+    assert!(row(&md, "| CRUST |").ends_with("| `crust` |"));
+    assert!(row(&md, "| LENZ |").ends_with("| 12672 |  |"));
+    assert!(row(&md, "| FITCONNECT |").contains("| 237.1 | – |"));
+    assert_eq!(
+        md.lines()
+            .filter(|l| l.contains(" % | ")
+                && l.starts_with("| ")
+                && l.chars().nth(2).unwrap().is_ascii_uppercase())
+            .count(),
+        16
+    );
+    let rmse = row(&md, "| manifold | `crust` |");
+    assert!(rmse.contains("| 3 | **0.006667** |"), "{rmse}");
+    assert!(row(&md, "| sharp | `sig-connect2d` |").contains("| 1 | – |"));
+    assert!(md.contains("| recon in SIGDT | 99.2 % | 97.0 % | 99.9 % |"));
+    for image in ["(accuracy.svg)", "(accuracy_eps.svg)", "(runtime.svg)"] {
+        assert!(md.contains(image), "{image}");
+    }
+}
+
+#[test]
+fn failures_are_listed() {
+    let (md, _, _) = report(&sample());
+    let failures = &md[md.find("## Failures").unwrap()..];
+    assert!(failures.contains("- `s2` (sharp, n = 60): failed: sculpt \\| panicked at line 3\n"));
+    assert!(failures.contains("- `o1` (open, n = 9991): timed out after 10 s\n"));
+    assert!(failures.contains("### `crust`\n\nNone.\n"));
+    let details = &failures[failures.find("<details>").unwrap()..];
+    assert!(details.contains("- `sig-connect2d`, manifold (1 of 3): `m3`\n"));
+    assert!(details.contains("- `sig-connect2d`, sharp (1 of 2): `s2`\n"));
+    assert!(details.contains("- `crust`, manifold (2 of 3): `m2`, `m3`\n"));
+    assert!(details.trim_end().ends_with("</details>"));
+}
+
+#[test]
+fn empty_data_gives_a_report() {
+    let (md, names, _) = report(&BenchData::default());
+    assert!(md.contains("## Exact reconstruction") && md.contains("Not computed."));
+    assert_eq!(names, ["report.md", "results.csv", "accuracy.svg", "runtime.svg"]);
+}

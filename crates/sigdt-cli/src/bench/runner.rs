@@ -1,0 +1,171 @@
+//! Runs every (case, method) pair of a benchmark in its own worker process, with a time
+//! limit, a progress bar, and as many at once as asked.
+//!
+//! A worker that exits with an error, crashes, prints nothing usable or outlives the time
+//! limit is recorded as a failure or a time-out of that one pair; the run goes on.
+
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+use anyhow::{Context, Result};
+use indicatif::{ProgressBar, ProgressStyle};
+
+use super::dataset::case_files;
+use super::record::{Case, Entry, Outcome, Run};
+
+/// What to run: the methods by name and the worker's settings.
+pub struct Plan<'a> {
+    /// The folder with the cases.
+    pub dir: &'a Path,
+    /// Method names (as `sigdt reconstruct --method` takes them).
+    pub methods: &'a [String],
+    /// Per-pair wall-clock limit.
+    pub time_limit: Duration,
+    /// Timed repetitions per pair (after a warm-up).
+    pub repeat: usize,
+    /// Pairs run at once.
+    pub jobs: usize,
+}
+
+/// Runs `plan` over `cases`; entries are in (case, method) order whatever `jobs` is.
+pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
+    let exe = std::env::current_exe().context("cannot locate the sigdt executable")?;
+    let tasks: Vec<(usize, &String)> =
+        (0..cases.len()).flat_map(|c| plan.methods.iter().map(move |m| (c, m))).collect();
+    let bar = ProgressBar::new(tasks.len() as u64);
+    bar.set_style(
+        ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} {msg}")
+            .expect("a valid progress template")
+            .progress_chars("=> "),
+    );
+    let next = AtomicUsize::new(0);
+    let results: Mutex<Vec<Option<Entry>>> = Mutex::new(vec![None; tasks.len()]);
+    std::thread::scope(|scope| {
+        for _ in 0..plan.jobs.max(1) {
+            scope.spawn(|| loop {
+                let k = next.fetch_add(1, Ordering::Relaxed);
+                let Some(&(case, method)) = tasks.get(k) else { break };
+                bar.set_message(format!("{} {}", cases[case].name, method));
+                let outcome = run_one(&exe, plan, &cases[case].name, method);
+                let entry = Entry { case, method: method.clone(), outcome };
+                results.lock().unwrap_or_else(|e| e.into_inner())[k] = Some(entry);
+                bar.inc(1);
+            });
+        }
+    });
+    bar.finish_and_clear();
+    let results = results.into_inner().unwrap_or_else(|e| e.into_inner());
+    Ok(results.into_iter().flatten().collect())
+}
+
+/// Runs one worker and turns whatever happened into an [`Outcome`].
+fn run_one(exe: &Path, plan: &Plan<'_>, name: &str, method: &str) -> Outcome {
+    let (points, gt, truth) = case_files(plan.dir, name);
+    let mut command = Command::new(exe);
+    command.arg("bench-worker").arg("--method").arg(method);
+    command.arg("--repeat").arg(plan.repeat.to_string()).arg(&points).arg(&gt);
+    if let Some(truth) = &truth {
+        command.arg("--truth").arg(truth);
+    }
+    command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
+    match command.spawn() {
+        Err(e) => Outcome::Failed(format!("cannot start the worker: {e}")),
+        Ok(child) => wait(child, plan.time_limit),
+    }
+}
+
+/// Waits for `child` at most `limit`, killing it after that.
+fn wait(mut child: Child, limit: Duration) -> Outcome {
+    // Drain the pipes on threads so that a chatty worker never blocks on a full pipe.
+    let drain = |pipe: Option<Box<dyn Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut text = String::new();
+            if let Some(pipe) = pipe {
+                let _ = pipe.take(1 << 20).read_to_string(&mut text);
+            }
+            text
+        })
+    };
+    let stdout = drain(child.stdout.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
+    let stderr = drain(child.stderr.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
+    let start = Instant::now();
+    let status = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break Some(status),
+            Ok(None) if start.elapsed() >= limit => {
+                let _ = child.kill();
+                let _ = child.wait();
+                break None;
+            }
+            Ok(None) => std::thread::sleep(Duration::from_millis(2)),
+            Err(e) => return Outcome::Failed(format!("waiting for the worker: {e}")),
+        }
+    };
+    let (stdout, stderr) = (stdout.join().unwrap_or_default(), stderr.join().unwrap_or_default());
+    let Some(status) = status else { return Outcome::TimedOut(limit.as_secs_f64()) };
+    if !status.success() {
+        let message = stderr.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("");
+        let message = message.strip_prefix("sigdt: ").unwrap_or(message);
+        return Outcome::Failed(match status.code() {
+            Some(code) => format!("exit status {code}: {message}"),
+            None => format!("killed by a signal ({status}): {message}"),
+        });
+    }
+    match stdout.lines().find_map(Run::parse) {
+        Some(run) => Outcome::Done(run),
+        None => Outcome::Failed(format!("unreadable worker output: {:?}", stdout.trim())),
+    }
+}
+
+/// Scores precomputed results (`DIR/NAME.edges`, one `i j` a line, and optionally
+/// `DIR/times.csv` with `name,time_ms` rows) as method `label`, in-process.
+pub fn import(label: &str, results: &Path, data: &Path, cases: &[Case]) -> Result<Vec<Entry>> {
+    let times = read_times(&results.join("times.csv"))?;
+    let mut entries = Vec::new();
+    for (case, c) in cases.iter().enumerate() {
+        let edges_file = results.join(format!("{}.edges", c.name));
+        let outcome = match score_file(data, &c.name, &edges_file, &times) {
+            Ok(run) => run,
+            Err(e) => Outcome::Failed(format!("{e:#}")),
+        };
+        entries.push(Entry { case, method: label.to_string(), outcome });
+    }
+    Ok(entries)
+}
+
+fn score_file(data: &Path, name: &str, edges: &Path, times: &[(String, f64)]) -> Result<Outcome> {
+    if !edges.is_file() {
+        return Ok(Outcome::Failed(format!("no result file {}", edges.display())));
+    }
+    let (points, gt, truth) = case_files(data, name);
+    let pts = sigdt::io::read_points(&points)?;
+    let gt = sigdt::io::read_edges(&gt)?;
+    let clean = truth.as_deref().map(sigdt::io::read_points).transpose()?;
+    let mut result = sigdt::io::read_edges(edges)?;
+    result.sort_unstable();
+    result.dedup();
+    if let Some(&[_, j]) = result.iter().find(|&&[_, j]| j >= pts.len()) {
+        anyhow::bail!("{}: index {j} is out of range ({} points)", edges.display(), pts.len());
+    }
+    let time = times.iter().find(|(n, _)| n == name).map_or(f64::NAN, |t| t.1);
+    let run = super::worker::score(&pts, clean.as_deref(), &gt, &result, "imported", time)?;
+    Ok(Outcome::Done(run))
+}
+
+/// `name,time_ms` rows (a header line is skipped); a missing file gives no times.
+fn read_times(path: &PathBuf) -> Result<Vec<(String, f64)>> {
+    let Ok(text) = std::fs::read_to_string(path) else { return Ok(Vec::new()) };
+    let mut times = Vec::new();
+    for (k, line) in text.lines().enumerate().skip(1) {
+        let Some((name, ms)) = line.split_once(',') else { continue };
+        let ms: f64 = ms.trim().parse().with_context(|| {
+            format!("{}:{}: '{}' is not a time in ms", path.display(), k + 1, ms.trim())
+        })?;
+        times.push((name.trim().to_string(), ms));
+    }
+    Ok(times)
+}

@@ -1,0 +1,161 @@
+//! The worker: runs one method on one labelled case and prints one line of results.
+//!
+//! `sigdt bench` starts a worker process per (case, method), so that a crash, an abort or a
+//! hang of one method on one case is recorded and never takes the whole run down. The line
+//! is `key=value` fields separated by spaces (values have no spaces); see [`Run::line`].
+
+use std::path::Path;
+use std::time::Instant;
+
+use anyhow::{Context, Result};
+use sigdt::{Edge, Options, Point};
+
+use super::record::Run;
+
+/// How often to run the method for timing: once to warm up, then `repeat` times (fewer
+/// when one run takes long), reporting the median.
+const SLOW_RUN_MS: f64 = 200.0;
+
+/// The worker's line for a [`Run`]: `key=value` fields; [`Run::parse`] reads it back.
+impl Run {
+    /// The one-line form.
+    pub fn line(&self) -> String {
+        let opt = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:e}"));
+        format!(
+            "exact={} status={} edges={} missing={} extra={} time_ms={:e} rmse={} hausdorff={} \
+             symdiff={}",
+            u8::from(self.exact),
+            self.status,
+            self.edges,
+            self.missing,
+            self.extra,
+            self.time_ms,
+            opt(self.rmse),
+            opt(self.hausdorff),
+            opt(self.symdiff)
+        )
+    }
+
+    /// Parses [`Run::line`]; `None` if anything is missing or malformed.
+    pub fn parse(line: &str) -> Option<Run> {
+        let field = |key: &str| {
+            line.split_whitespace().find_map(|kv| kv.strip_prefix(key)?.strip_prefix('='))
+        };
+        let opt = |key: &str| -> Option<Option<f64>> {
+            match field(key)? {
+                "-" => Some(None),
+                text => text.parse().ok().map(Some),
+            }
+        };
+        Some(Run {
+            exact: field("exact")? == "1",
+            status: field("status")?.to_string(),
+            edges: field("edges")?.parse().ok()?,
+            missing: field("missing")?.parse().ok()?,
+            extra: field("extra")?.parse().ok()?,
+            time_ms: field("time_ms")?.parse().ok()?,
+            rmse: opt("rmse")?,
+            hausdorff: opt("hausdorff")?,
+            symdiff: opt("symdiff")?,
+        })
+    }
+}
+
+/// Runs `options` on the case (points, ground truth, optional clean positions) and measures.
+pub fn measure(
+    points: &Path,
+    gt: &Path,
+    truth: Option<&Path>,
+    options: &Options,
+    repeat: usize,
+) -> Result<Run> {
+    let pts = sigdt::io::read_points(points)?;
+    let gt = sigdt::io::read_edges(gt)?;
+    let clean = truth.map(sigdt::io::read_points).transpose()?;
+    let run = || sigdt::reconstruct(&pts, options);
+    let start = Instant::now();
+    let rec = run()?;
+    let mut times = vec![start.elapsed().as_secs_f64() * 1e3];
+    if times[0] < SLOW_RUN_MS {
+        times.clear();
+        for _ in 0..repeat.max(1) {
+            let start = Instant::now();
+            let again = run()?;
+            times.push(start.elapsed().as_secs_f64() * 1e3);
+            debug_assert_eq!(again, rec);
+        }
+    }
+    times.sort_by(f64::total_cmp);
+    score(
+        &pts,
+        clean.as_deref(),
+        &gt,
+        &rec.edges,
+        rec.status.name(),
+        times[times.len() / 2],
+    )
+    .context("scoring the result")
+}
+
+/// Scores `edges` (a result on `points`) against `gt`; distances and areas are measured
+/// against the ground truth on `clean` positions when given.
+pub fn score(
+    points: &[Point],
+    clean: Option<&[Point]>,
+    gt: &[Edge],
+    edges: &[Edge],
+    status: &str,
+    time_ms: f64,
+) -> Result<Run> {
+    let diff = sigdt::eval::edge_diff(edges, gt);
+    // Against clean positions: one point array, the clean copies after the given ones.
+    let (all, truth_edges): (std::borrow::Cow<'_, [Point]>, Vec<Edge>) = match clean {
+        None => (points.into(), gt.to_vec()),
+        Some(clean) => {
+            if clean.len() != points.len() {
+                anyhow::bail!(
+                    "the clean positions have {} points, the case has {}",
+                    clean.len(),
+                    points.len()
+                );
+            }
+            let n = points.len();
+            ([points, clean].concat().into(), gt.iter().map(|&[i, j]| [i + n, j + n]).collect())
+        }
+    };
+    let distances = sigdt::eval::distance_errors(&all, edges, &truth_edges)?;
+    let area = sigdt::eval::area_difference(&all, edges, &truth_edges)?;
+    Ok(Run {
+        exact: diff.missing.is_empty() && diff.extra.is_empty(),
+        status: status.to_string(),
+        edges: edges.len(),
+        missing: diff.missing.len(),
+        extra: diff.extra.len(),
+        time_ms,
+        rmse: distances.map(|d| d.rmse),
+        hausdorff: distances.map(|d| d.hausdorff),
+        symdiff: area.normalised,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_round_trips() {
+        let m = Run {
+            exact: true,
+            status: "polygon".into(),
+            edges: 4,
+            missing: 0,
+            extra: 0,
+            time_ms: 0.125,
+            rmse: Some(1e-3),
+            hausdorff: None,
+            symdiff: Some(0.0),
+        };
+        assert_eq!(Run::parse(&m.line()), Some(m));
+        assert_eq!(Run::parse("exact=1 status=polygon"), None);
+    }
+}

@@ -1,0 +1,113 @@
+//! `sigdt sample` and `sigdt perturb`: point sets for the paper's experiments.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Result};
+use sigdt::curves::{self, BezierPath, Sample};
+use sigdt::{Edge, Point};
+
+use crate::args_generate::{PerturbArgs, SampleArgs};
+use crate::output::Output;
+
+/// A labelled sample: points, ground truth, and the clean positions when noise was added.
+pub struct Labelled {
+    /// The (possibly noisy) points.
+    pub points: Vec<Point>,
+    /// Ground-truth edges.
+    pub gt: Vec<Edge>,
+    /// Clean positions, same indices, if `points` are noisy.
+    pub truth: Option<Vec<Point>>,
+}
+
+/// `sigdt sample`.
+pub fn sample(args: &SampleArgs) -> Result<()> {
+    let paths = curves::read_svg_paths(&args.svg)?;
+    let path = pick(&paths, args.path, &args.svg)?;
+    let labelled =
+        eps_sample(path, args.eps, args.offset, args.lfs_noise, args.seed, !args.ordered)?;
+    write_labelled(&args.output, &labelled)
+}
+
+/// `sigdt perturb`.
+pub fn perturb(args: &PerturbArgs) -> Result<()> {
+    let output = Output::new(args.output.as_deref(), &args.input)?;
+    let mut points = crate::run::read_input(&args.input)?;
+    if let Some(s) = args.noise {
+        points = curves::uniform_noise(&points, s, args.seed)?;
+    }
+    if let Some(q) = args.outliers {
+        points = curves::add_outliers(&points, q, args.seed.wrapping_add(1))?;
+    }
+    output.write(|w| w.write_all(points_text(&points).as_bytes()))
+}
+
+/// Path `k` of `paths`, read from `file`.
+pub fn pick<'a>(paths: &'a [BezierPath], k: usize, file: &Path) -> Result<&'a BezierPath> {
+    match paths.get(k) {
+        Some(p) => Ok(p),
+        None if paths.is_empty() => bail!("{}: no <path> with curve data", file.display()),
+        None => bail!("{}: --path {k}, but the file has {} path(s)", file.display(), paths.len()),
+    }
+}
+
+/// An eps-sample of `path` from `offset`, optionally with lfs noise, shuffled if asked.
+pub fn eps_sample(
+    path: &BezierPath,
+    eps: f64,
+    offset: f64,
+    lfs_noise: Option<f64>,
+    seed: u64,
+    shuffle: bool,
+) -> Result<Labelled> {
+    let framed = curves::eps_sample_with_frames(path, eps, offset)?;
+    let clean = framed.sample;
+    let noisy = match lfs_noise {
+        Some(delta) => {
+            Some(curves::lfs_noise(&clean.points, &framed.normals, &framed.lfs, delta, seed)?)
+        }
+        None => None,
+    };
+    let order = |s: Sample| if shuffle { s.shuffled(seed) } else { s };
+    let edges = clean.edges.clone();
+    let truth = order(clean);
+    Ok(match noisy {
+        None => Labelled { points: truth.points, gt: truth.edges, truth: None },
+        Some(points) => {
+            // The same seed gives the same permutation for the same length.
+            let noisy = order(Sample { points, edges });
+            Labelled { points: noisy.points, gt: noisy.edges, truth: Some(truth.points) }
+        }
+    })
+}
+
+/// Writes `OUT.xy`, `OUT.gt` and, for noisy points, `OUT.truth.xy`, each atomically.
+pub fn write_labelled(out: &Path, labelled: &Labelled) -> Result<()> {
+    let with = |ext: &str| -> PathBuf {
+        let stem = out.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
+        out.with_file_name(format!("{stem}.{ext}"))
+    };
+    if out.extension().map_or(true, |e| e == "gt") {
+        bail!(
+            "{}: the output needs an extension such as .xy (the ground truth goes to .gt)",
+            out.display()
+        );
+    }
+    let none = Path::new("-");
+    Output::new(Some(out), none)?
+        .write(|w| w.write_all(points_text(&labelled.points).as_bytes()))?;
+    Output::new(Some(&with("gt")), none)?.write(|w| sigdt::io::write_edges(w, &labelled.gt))?;
+    if let Some(truth) = &labelled.truth {
+        Output::new(Some(&with("truth.xy")), none)?
+            .write(|w| w.write_all(points_text(truth).as_bytes()))?;
+    }
+    Ok(())
+}
+
+/// `x y` lines, shortest decimals that read back to the same numbers.
+pub fn points_text(points: &[Point]) -> String {
+    let mut text = String::with_capacity(40 * points.len());
+    for [x, y] in points {
+        text.push_str(&format!("{x:?} {y:?}\n"));
+    }
+    text
+}

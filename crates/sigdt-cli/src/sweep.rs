@@ -1,0 +1,220 @@
+//! `sigdt sweep`: RMSE and exact rate of every method against a noise level, an outlier
+//! share, an lfs-noise level or the sampling density eps (the paper's Figures 14 and
+//! 16-18).
+//!
+//! For each level the perturbed sets are written as a labelled folder
+//! (`OUT/data/KIND_LEVEL/`, with `.truth.xy` clean positions for noise) and run through
+//! the `bench` machinery, so a crash or time-out is recorded like any other result.
+
+use std::fmt::Write as _;
+use std::path::Path;
+use std::time::Duration;
+
+use anyhow::{bail, Context, Result};
+use sigdt::curves;
+
+use crate::args_bench::methods;
+use crate::args_generate::{SweepArgs, SweepKind};
+use crate::bench::record::{Case, Outcome};
+use crate::bench::{chart, dataset, runner};
+use crate::generate::{eps_sample, pick, write_labelled, Labelled};
+
+/// Start offsets per eps-sampled set: k / 20, as in the paper's Bézier experiment.
+const OFFSETS: usize = 20;
+
+/// `sigdt sweep`.
+pub fn sweep(args: &SweepArgs) -> Result<()> {
+    let methods: Vec<String> = methods(&args.method)?.iter().map(|m| m.to_string()).collect();
+    let levels =
+        if args.levels.is_empty() { default_levels(args.kind) } else { args.levels.clone() };
+    if let Some(bad) = levels.iter().find(|l| !l.is_finite() || **l < 0.0) {
+        bail!("--levels: {bad} is not a level >= 0");
+    }
+    if !(args.time_limit.is_finite() && args.time_limit > 0.0) {
+        bail!("--time-limit must be a positive number of seconds");
+    }
+    let mut rows = Vec::new();
+    for (k, &level) in levels.iter().enumerate() {
+        let dir = args.out.join("data").join(format!("{}_{level}", kind_name(args.kind)));
+        std::fs::create_dir_all(&dir)
+            .with_context(|| format!("{}: cannot create the folder", dir.display()))?;
+        let sets = generate(args, level, k as u64)?;
+        let cases = write_folder(&dir, &sets)?;
+        crate::run::note(&format!(
+            "level {level}: {} sets x {} methods",
+            cases.len(),
+            methods.len()
+        ));
+        let plan = runner::Plan {
+            dir: &dir,
+            methods: &methods,
+            time_limit: Duration::from_secs_f64(args.time_limit),
+            repeat: 1,
+            jobs: args.jobs,
+        };
+        let entries = runner::run_all(&plan, &cases)?;
+        for method in &methods {
+            let runs: Vec<_> = entries.iter().filter(|e| &e.method == method).collect();
+            let done: Vec<_> = runs
+                .iter()
+                .filter_map(|e| match &e.outcome {
+                    Outcome::Done(run) => Some(run),
+                    _ => None,
+                })
+                .collect();
+            let rmse: Vec<f64> = done.iter().filter_map(|r| r.rmse).collect();
+            rows.push(Row {
+                level,
+                method: method.clone(),
+                sets: runs.len(),
+                done: done.len(),
+                exact: done.iter().filter(|r| r.exact).count(),
+                mean_rmse: (!rmse.is_empty()).then(|| rmse.iter().sum::<f64>() / rmse.len() as f64),
+            });
+        }
+    }
+    write_outputs(args, &methods, &rows)
+}
+
+/// One (level, method) aggregate.
+struct Row {
+    level: f64,
+    method: String,
+    sets: usize,
+    done: usize,
+    exact: usize,
+    mean_rmse: Option<f64>,
+}
+
+fn default_levels(kind: SweepKind) -> Vec<f64> {
+    match kind {
+        SweepKind::Noise => vec![1e-4, 3e-4, 1e-3, 3e-3, 1e-2],
+        SweepKind::Outliers => vec![0.01, 0.02, 0.05, 0.1, 0.2],
+        SweepKind::LfsNoise => vec![0.05, 0.1, 0.2, 0.3, 0.4, 0.5],
+        SweepKind::Eps => vec![0.1, 0.2, 0.3, 0.4, 0.5],
+    }
+}
+
+fn kind_name(kind: SweepKind) -> &'static str {
+    match kind {
+        SweepKind::Noise => "noise",
+        SweepKind::Outliers => "outliers",
+        SweepKind::LfsNoise => "lfs-noise",
+        SweepKind::Eps => "eps",
+    }
+}
+
+/// The labelled sets of one level, named.
+fn generate(args: &SweepArgs, level: f64, k: u64) -> Result<Vec<(String, Labelled)>> {
+    let seed = |i: usize| 1000 * (k + 1) + i as u64;
+    match args.kind {
+        SweepKind::Noise | SweepKind::Outliers => {
+            let mut cases = dataset::read_index(&args.source, &args.categories, None)?;
+            cases.truncate(args.limit.unwrap_or(usize::MAX));
+            if cases.is_empty() {
+                bail!("{}: no case of the categories {:?}", args.source.display(), args.categories);
+            }
+            let mut sets = Vec::new();
+            for (i, case) in cases.iter().enumerate() {
+                let (xy, gt, _) = dataset::case_files(&args.source, &case.name);
+                let clean = sigdt::io::read_points(&xy)?;
+                let gt = sigdt::io::read_edges(&gt)?;
+                let labelled = if args.kind == SweepKind::Noise {
+                    let points = curves::uniform_noise(&clean, level, seed(i))?;
+                    Labelled { points, gt, truth: Some(clean) }
+                } else {
+                    let points = curves::add_outliers(&clean, level, seed(i))?;
+                    Labelled { points, gt, truth: None }
+                };
+                sets.push((case.name.clone(), labelled));
+            }
+            Ok(sets)
+        }
+        SweepKind::LfsNoise | SweepKind::Eps => {
+            let paths = curves::read_svg_paths(&args.source)?;
+            let path = pick(&paths, args.path, &args.source)?;
+            let (eps, noise) =
+                if args.kind == SweepKind::Eps { (level, None) } else { (args.eps, Some(level)) };
+            (0..OFFSETS)
+                .map(|i| {
+                    let offset = i as f64 / OFFSETS as f64;
+                    let set = eps_sample(path, eps, offset, noise, seed(i), true)?;
+                    Ok((format!("off{i:02}"), set))
+                })
+                .collect()
+        }
+    }
+}
+
+/// Writes the sets and their index.csv into `dir`; returns them as cases.
+fn write_folder(dir: &Path, sets: &[(String, Labelled)]) -> Result<Vec<Case>> {
+    let mut index = String::from("name,category,n_points,epsilon\n");
+    let mut cases = Vec::new();
+    for (name, set) in sets {
+        write_labelled(&dir.join(format!("{name}.xy")), set)?;
+        writeln!(index, "{name},sweep,{},", set.points.len()).expect("writing to a String");
+        cases.push(Case {
+            name: name.clone(),
+            category: "sweep".into(),
+            n_points: set.points.len(),
+            epsilon: None,
+            graph_epsilon: None,
+        });
+    }
+    std::fs::write(dir.join("index.csv"), index)
+        .with_context(|| format!("{}: cannot write index.csv", dir.display()))?;
+    Ok(cases)
+}
+
+/// `sweep.csv`, `rmse.svg` and `exact.svg` in the output folder.
+fn write_outputs(args: &SweepArgs, methods: &[String], rows: &[Row]) -> Result<()> {
+    let kind = kind_name(args.kind);
+    let mut csv = String::from("kind,level,method,sets,done,exact,mean_rmse\n");
+    for r in rows {
+        let rmse = r.mean_rmse.map_or(String::new(), |v| format!("{v:e}"));
+        writeln!(csv, "{kind},{},{},{},{},{},{rmse}", r.level, r.method, r.sets, r.done, r.exact)
+            .expect("writing to a String");
+    }
+    let series = |value: &dyn Fn(&Row) -> Option<f64>| -> Vec<(String, Vec<(f64, f64)>)> {
+        methods
+            .iter()
+            .map(|m| {
+                let points = rows
+                    .iter()
+                    .filter(|r| &r.method == m)
+                    .filter_map(|r| Some((r.level, value(r)?)))
+                    .collect();
+                (m.clone(), points)
+            })
+            .collect()
+    };
+    let x_label = match args.kind {
+        SweepKind::Noise => "uniform noise (fraction of the bounding-box diagonal)",
+        SweepKind::Outliers => "outliers (fraction of the points)",
+        SweepKind::LfsNoise => "lfs noise delta",
+        SweepKind::Eps => "sampling epsilon",
+    };
+    let log_x = matches!(args.kind, SweepKind::Noise | SweepKind::Outliers);
+    let rmse = chart::line_chart(
+        &format!("RMSE against {kind}"),
+        x_label,
+        "mean RMSE / diagonal",
+        log_x,
+        true,
+        &series(&|r| r.mean_rmse.filter(|v| *v > 0.0)),
+    );
+    let exact = chart::line_chart(
+        &format!("Exact reconstructions against {kind}"),
+        x_label,
+        "exact (%)",
+        log_x,
+        false,
+        &series(&|r| (r.sets > 0).then(|| 100.0 * r.exact as f64 / r.sets as f64)),
+    );
+    for (name, text) in [("sweep.csv", csv), ("rmse.svg", rmse), ("exact.svg", exact)] {
+        let path = args.out.join(name);
+        std::fs::write(&path, text).with_context(|| format!("{}: cannot write", path.display()))?;
+        crate::run::note(&format!("wrote {}", path.display()));
+    }
+    Ok(())
+}

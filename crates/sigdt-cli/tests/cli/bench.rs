@@ -1,0 +1,116 @@
+//! `sigdt bench` and `sigdt eval`: a small labelled folder made here, with one case that
+//! cannot be read, so that a failing case is recorded and the run still succeeds.
+
+use super::*;
+
+/// A labelled folder: a 12-gon (manifold), a square (sharp) and a broken case.
+fn labelled_folder() -> TempDir {
+    let dir = tempdir();
+    let d = dir.path();
+    write_points(d, "gon.xy", &circle(12, 1.0));
+    fs::write(d.join("gon.gt"), edges_text(&cycle_edges(12))).unwrap();
+    write_points(d, "square.xy", &square());
+    fs::write(d.join("square.gt"), SQUARE_EDGES).unwrap();
+    fs::write(d.join("broken.xy"), "0 0\n1 zero\n").unwrap();
+    fs::write(d.join("broken.gt"), "0 1\n").unwrap();
+    fs::write(
+        d.join("index.csv"),
+        "name,category,n_points,epsilon\ngon,manifold,12,0.27\nsquare,sharp,4,0.7\n\
+         broken,manifold,2,0.5\n",
+    )
+    .unwrap();
+    dir
+}
+
+#[test]
+fn bench_writes_a_report_and_records_failures() {
+    let data = labelled_folder();
+    let out = tempdir();
+    let report = out.path().join("rep");
+    let d = data.path().to_str().unwrap();
+    let r = report.to_str().unwrap();
+    let run = sigdt(&["bench", d, "--method", "sig-connect2d,connect2d", "--out", r, "-j", "2"]);
+    run.expect(0);
+    let md = fs::read_to_string(report.join("report.md")).unwrap();
+    assert!(md.contains("sig-connect2d") && md.contains("connect2d"), "{md}");
+    assert!(md.contains("broken") && md.contains("is not a number"), "failure not reported:\n{md}");
+    let csv = fs::read_to_string(report.join("results.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 3 * 2, "{csv}");
+    assert!(csv.lines().any(|l| l.starts_with("gon,") && l.contains(",sig-connect2d,ok,1,")));
+    for chart in ["accuracy.svg", "runtime.svg"] {
+        assert!(fs::read_to_string(report.join(chart)).unwrap().starts_with("<svg"), "{chart}");
+    }
+}
+
+#[test]
+fn bench_imports_results_of_other_tools() {
+    let data = labelled_folder();
+    let other = tempdir();
+    fs::write(other.path().join("gon.edges"), edges_text(&cycle_edges(12))).unwrap();
+    fs::write(other.path().join("square.edges"), "0 1\n").unwrap();
+    fs::write(other.path().join("times.csv"), "name,time_ms\ngon,1.5\n").unwrap();
+    let out = tempdir();
+    let import = format!("mine={}", other.path().display());
+    let d = data.path().to_str().unwrap();
+    let o = out.path().to_str().unwrap();
+    sigdt(&["bench", d, "--method", "connect2d", "--out", o, "--import", &import]).expect(0);
+    let csv = fs::read_to_string(out.path().join("results.csv")).unwrap();
+    assert!(csv.lines().any(|l| l.starts_with("gon,") && l.contains(",mine,ok,1,")), "{csv}");
+    assert!(csv.lines().any(|l| l.starts_with("square,") && l.contains(",mine,ok,0,")), "{csv}");
+}
+
+#[test]
+fn bench_errors_are_clear() {
+    let data = labelled_folder();
+    let d = data.path().to_str().unwrap();
+    sigdt(&["bench", d, "--method", "nope"]).error(&["unknown method 'nope'"]);
+    sigdt(&["bench", d, "--categories", "open"]).error(&["no case matches"]);
+    let empty = tempdir();
+    sigdt(&["bench", empty.path().to_str().unwrap()]).error(&["index.csv"]);
+    sigdt(&["bench", d, "--time-limit", "0"]).usage_error();
+    sigdt(&["bench", d, "--import", "nolabel"]).usage_error();
+}
+
+#[test]
+fn a_hanging_or_crashing_method_is_recorded_not_fatal() {
+    // A case too large to finish in the limit: a time-out, and the other case still runs.
+    let data = labelled_folder();
+    let big: Vec<[f64; 2]> = circle(200_000, 1.0);
+    write_points(data.path(), "big.xy", &big);
+    fs::write(data.path().join("big.gt"), edges_text(&cycle_edges(200_000))).unwrap();
+    let index = fs::read_to_string(data.path().join("index.csv")).unwrap();
+    fs::write(data.path().join("index.csv"), format!("{index}big,large,200000,\n")).unwrap();
+    let out = tempdir();
+    let (d, o) = (data.path().to_str().unwrap(), out.path().to_str().unwrap());
+    let run = sigdt(&[
+        "bench",
+        d,
+        "--method",
+        "sig-connect2d",
+        "--out",
+        o,
+        "--time-limit",
+        "0.05",
+        "--names",
+        "g",
+    ]);
+    run.expect(0);
+    let csv = fs::read_to_string(out.path().join("results.csv")).unwrap();
+    assert!(csv.lines().any(|l| l.starts_with("big,") && l.contains(",timeout,")), "{csv}");
+}
+
+#[test]
+fn eval_scores_a_method_and_an_edge_file() {
+    let dir = tempdir();
+    let pts = write_points(dir.path(), "gon.xy", &circle(12, 1.0));
+    fs::write(dir.path().join("gon.gt"), edges_text(&cycle_edges(12))).unwrap();
+    let (p, gt) = (pts.to_str().unwrap(), dir.path().join("gon.gt"));
+    let run = sigdt(&["eval", p, "--gt", gt.to_str().unwrap()]);
+    run.expect(0);
+    assert!(run.stdout.contains("exact:") && run.stdout.contains("yes"), "{run}");
+    assert!(run.stdout.contains("epsilon:"), "{run}");
+    fs::write(dir.path().join("bad.edges"), "0 1\n1 99\n").unwrap();
+    let bad = dir.path().join("bad.edges");
+    sigdt(&["eval", p, "--gt", gt.to_str().unwrap(), "--edges", bad.to_str().unwrap()])
+        .error(&["99"]);
+}
