@@ -13,6 +13,7 @@ out.
 
 from ._api import proximity_graph, read_points, reconstruct, reconstruct_many
 from ._core import GRAPH_KINDS, METHODS, InternalError, InvalidInputError, ParseError, __version__
+from ._eval import evaluate, graph_epsilon, graph_overlap
 from ._result import Reconstruction
 
 __all__ = [
@@ -23,6 +24,9 @@ __all__ = [
     "ParseError",
     "Reconstruction",
     "__version__",
+    "evaluate",
+    "graph_epsilon",
+    "graph_overlap",
     "proximity_graph",
     "read_points",
     "reconstruct",

@@ -204,8 +204,8 @@ def test_impossible_coordinate_range_is_refused():
 
 
 def test_unknown_method_and_non_str_method():
-    with pytest.raises(ValueError, match="unknown method 'crust'.*sig-connect2d"):
-        sigdt.reconstruct(SQUARE, method="crust")
+    with pytest.raises(ValueError, match="unknown method 'gathan'.*sig-connect2d"):
+        sigdt.reconstruct(SQUARE, method="gathan")
     with pytest.raises(TypeError, match="method must be a str, got int"):
         sigdt.reconstruct(SQUARE, method=3)
     with pytest.raises(TypeError):
@@ -395,7 +395,7 @@ def test_reconstruct_many_rejects_bad_n_jobs(n_jobs):
 
 def test_reconstruct_many_rejects_unknown_method():
     with pytest.raises(ValueError, match="unknown method"):
-        sigdt.reconstruct_many([SQUARE], method="crust")
+        sigdt.reconstruct_many([SQUARE], method="gathan")
 
 
 # --- module constants ------------------------------------------------------------------------------

@@ -35,6 +35,9 @@ PUBLIC_FUNCTIONS = [n for n in sigdt.__all__ if inspect.isfunction(getattr(sigdt
 
 def test_the_public_functions_are_the_expected_ones():
     assert sorted(PUBLIC_FUNCTIONS) == [
+        "evaluate",
+        "graph_epsilon",
+        "graph_overlap",
         "proximity_graph",
         "read_points",
         "reconstruct",

@@ -4,6 +4,7 @@
 //! float64), numpy arrays and plain tuples out, core errors to Python exceptions, panics to
 //! `InternalError`. The user-facing names, defaults and docstrings live in `python/sigdt`.
 mod convert;
+mod eval;
 
 use convert::{err, guarded, points, InternalError, InvalidInputError, ParseError};
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray2};
@@ -123,6 +124,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(reconstruct_many, m)?)?;
     m.add_function(wrap_pyfunction!(proximity_graph, m)?)?;
     m.add_function(wrap_pyfunction!(read_points, m)?)?;
+    m.add_function(wrap_pyfunction!(eval::evaluate, m)?)?;
+    m.add_function(wrap_pyfunction!(eval::graph_epsilon, m)?)?;
+    m.add_function(wrap_pyfunction!(eval::graph_overlap, m)?)?;
     m.add("InvalidInputError", m.py().get_type::<InvalidInputError>())?;
     m.add("ParseError", m.py().get_type::<ParseError>())?;
     m.add("InternalError", m.py().get_type::<InternalError>())?;

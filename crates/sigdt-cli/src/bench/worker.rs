@@ -86,15 +86,8 @@ pub fn measure(
         }
     }
     times.sort_by(f64::total_cmp);
-    score(
-        &pts,
-        clean.as_deref(),
-        &gt,
-        &rec.edges,
-        rec.status.name(),
-        times[times.len() / 2],
-    )
-    .context("scoring the result")
+    score(&pts, clean.as_deref(), &gt, &rec.edges, rec.status.name(), times[times.len() / 2])
+        .context("scoring the result")
 }
 
 /// Scores `edges` (a result on `points`) against `gt`; distances and areas are measured
