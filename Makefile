@@ -7,7 +7,7 @@ TARGET_DIR := $(or $(CARGO_TARGET_DIR),target)
 SIGDT := $(TARGET_DIR)/release/sigdt
 DEMO := glyph_n_tilde
 
-.PHONY: all build demo test lint rust-test doc bench bench-python clean py-build py-test py-lint
+.PHONY: all build demo test lint rust-test doc bench bench-python report clean py-build py-test py-lint
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -69,6 +69,25 @@ bench:
 ## bench-python: Python-call overhead at 1e5 points and reconstruct_many throughput.
 bench-python: py-build build
 	$(VPY) python/bench/bench_python.py
+
+## report: the side-by-side evaluation in docs/report/ (issue 4): every method and
+## shapely.concave_hull on ../shared/data/curves (or DATA=...), then the noise, outlier,
+## lfs-noise and eps sweeps. Takes a few minutes on 2 cores.
+DATA ?= ../shared/data/curves
+REPORT := docs/report
+SWEEPS := $(TARGET_DIR)/sweeps
+report: build py-build
+	rm -rf $(TARGET_DIR)/concave-hull $(SWEEPS)
+	$(VPY) -m sigdt.baselines $(DATA) $(TARGET_DIR)/concave-hull
+	$(SIGDT) bench $(DATA) --out $(REPORT) --import concave-hull=$(TARGET_DIR)/concave-hull
+	$(SIGDT) sweep noise $(DATA) --out $(SWEEPS)/noise --jobs 2
+	$(SIGDT) sweep outliers $(DATA) --out $(SWEEPS)/outliers --jobs 2
+	$(SIGDT) sweep lfs-noise data/svg/simple.svg --out $(SWEEPS)/lfs-noise --jobs 2
+	$(SIGDT) sweep eps data/svg/simple.svg --out $(SWEEPS)/eps --jobs 2
+	mkdir -p $(REPORT)/sweeps
+	for k in noise outliers lfs-noise eps; do \
+	  for f in sweep.csv rmse.svg exact.svg; do cp $(SWEEPS)/$$k/$$f $(REPORT)/sweeps/$$k-$$f; done; \
+	done
 
 clean:
 	rm -rf out $(VENV)

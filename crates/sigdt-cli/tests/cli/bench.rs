@@ -114,3 +114,68 @@ fn eval_scores_a_method_and_an_edge_file() {
     sigdt(&["eval", p, "--gt", gt.to_str().unwrap(), "--edges", bad.to_str().unwrap()])
         .error(&["99"]);
 }
+
+fn simple_svg() -> String {
+    let svg = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/svg/simple.svg");
+    svg.to_str().unwrap().to_string()
+}
+
+#[test]
+fn sample_writes_points_and_ground_truth_that_reconstruct_exactly() {
+    let dir = tempdir();
+    let d = dir.path();
+    sigdt_in(d, &["sample", &simple_svg(), "--eps", "0.3", "--offset", "0.35", "-o", "s.xy"], None)
+        .ok();
+    let gt = fs::read_to_string(d.join("s.gt")).unwrap();
+    let points = fs::read_to_string(d.join("s.xy")).unwrap();
+    assert_eq!(gt.lines().count(), points.lines().count(), "a closed curve: n edges");
+    sigdt_in(d, &["reconstruct", "s.xy"], None).ok().stdout_is(&gt);
+    // lfs noise writes the clean positions too; same seed, same file.
+    let noisy = ["sample", &simple_svg(), "--eps", "0.3", "--lfs-noise", "0.1", "-o", "n.xy"];
+    sigdt_in(d, &noisy, None).ok();
+    let first = fs::read_to_string(d.join("n.xy")).unwrap();
+    assert!(d.join("n.truth.xy").is_file() && first != points);
+    sigdt_in(d, &noisy, None).ok();
+    assert_eq!(fs::read_to_string(d.join("n.xy")).unwrap(), first);
+    sigdt_in(d, &["sample", &simple_svg(), "--eps", "0", "-o", "z.xy"], None).error(&["eps"]);
+    sigdt_in(d, &["sample", &simple_svg(), "--eps", "0.3", "--path", "9", "-o", "z.xy"], None)
+        .error(&["--path 9"]);
+    assert!(!d.join("z.xy").exists());
+}
+
+#[test]
+fn perturb_adds_noise_and_outliers_deterministically() {
+    let dir = tempdir();
+    write_points(dir.path(), "gon.xy", &circle(50, 1.0));
+    let noisy = sigdt_in(dir.path(), &["perturb", "gon.xy", "--noise", "0.01"], None);
+    noisy.ok();
+    assert_eq!(noisy.stdout.lines().count(), 50);
+    let again = sigdt_in(dir.path(), &["perturb", "gon.xy", "--noise", "0.01"], None);
+    assert_eq!(again.stdout, noisy.stdout);
+    let more = sigdt_in(dir.path(), &["perturb", "gon.xy", "--outliers", "0.1"], None);
+    assert_eq!(more.ok().stdout.lines().count(), 55);
+    sigdt_in(dir.path(), &["perturb", "gon.xy", "--noise=-1"], None).error(&["-1"]);
+}
+
+#[test]
+fn sweep_writes_a_table_and_charts() {
+    let dir = tempdir();
+    let args = [
+        "sweep",
+        "eps",
+        &simple_svg(),
+        "--levels",
+        "0.3,0.5",
+        "--method",
+        "sig-connect2d,crust",
+        "--out",
+        "sw",
+    ];
+    sigdt_in(dir.path(), &args, None).expect(0);
+    let csv = fs::read_to_string(dir.path().join("sw/sweep.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 2 * 2, "{csv}");
+    assert!(csv.contains("eps,0.3,sig-connect2d,20,20,20,"), "{csv}");
+    for chart in ["rmse.svg", "exact.svg"] {
+        assert!(fs::read_to_string(dir.path().join("sw").join(chart)).unwrap().contains("<svg"));
+    }
+}
