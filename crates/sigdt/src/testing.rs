@@ -89,6 +89,23 @@ pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<()
     Ok(())
 }
 
+/// The sorted edges of the cycle `0, 1, ..., n-1` (ground truth of points in curve order).
+pub fn cycle_edges(n: usize) -> Vec<Edge> {
+    let mut edges: Vec<Edge> = (0..n).map(|i| [i.min((i + 1) % n), i.max((i + 1) % n)]).collect();
+    edges.sort_unstable();
+    edges
+}
+
+/// The edges a graph filter (vertex pairs on the triangulation) gives for `points`, as
+/// sorted input-index pairs; for the baselines' unit tests.
+pub fn filter_edges(
+    points: &[Point],
+    filter: impl Fn(&crate::delaunay::Triangulation) -> Vec<[u32; 2]>,
+) -> Vec<Edge> {
+    let dt = crate::delaunay::Triangulation::new(points).expect("valid test points");
+    dt.to_input_edges(filter(&dt))
+}
+
 /// The first pair of edges that cross at a point interior to both, if any. Uses a uniform
 /// grid over the edges' bounding box, so it is fast on curve-like outputs.
 pub fn first_crossing(points: &[Point], edges: &[Edge]) -> Option<(Edge, Edge)> {

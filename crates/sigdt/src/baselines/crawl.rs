@@ -149,18 +149,11 @@ fn second_nearest(dt: &Triangulation, v: u32) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::{cycle_edges as cycle, filter_edges};
     use crate::Point;
 
     fn run(pts: &[Point]) -> Vec<crate::Edge> {
-        let dt = Triangulation::new(pts).unwrap();
-        dt.to_input_edges(crawl(&dt))
-    }
-
-    fn cycle(n: usize) -> Vec<crate::Edge> {
-        let mut e: Vec<crate::Edge> =
-            (0..n).map(|i| [i.min((i + 1) % n), i.max((i + 1) % n)]).collect();
-        e.sort_unstable();
-        e
+        filter_edges(pts, crawl)
     }
 
     #[test]

@@ -50,7 +50,7 @@
 //!
 //! [ABE98]: https://doi.org/10.1006/gmip.1998.0465
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
-use crate::curves::Rng;
+use crate::delaunay::brio::brio_order_within;
 use crate::delaunay::Triangulation;
 use crate::geometry::{orient2d, Point};
 use spade::handles::FixedVertexHandle;
@@ -60,10 +60,6 @@ use spade::{DelaunayTriangulation, Point2, Triangulation as _};
 const MAX_ALLOWED: f64 = spade::MAX_ALLOWED_VALUE;
 /// Smallest non-zero absolute coordinate spade accepts (2^-142).
 const MIN_ALLOWED: f64 = spade::MIN_ALLOWED_VALUE;
-/// Fixed seed of the insertion order of the circumcentres: results are reproducible.
-const SEED: u64 = 0x4352_5553_5431_3938;
-/// BRIO rounds smaller than this are merged into the first round.
-const MIN_ROUND: usize = 64;
 
 /// The CRUST edges of `dt` (a [`Shape::Proper`](crate::delaunay::Shape::Proper)
 /// triangulation) as pairs of vertices, each undirected edge once.
@@ -80,7 +76,6 @@ pub fn crust(dt: &Triangulation) -> Vec<[u32; 2]> {
         })
         .collect();
     let scale = range_scale(dt, &centres);
-    let grid = HilbertGrid::new((0..m as u32).map(|v| dt.point(v).map(|x| x * scale)));
     for w in &mut centres {
         for x in w.iter_mut() {
             *x *= scale;
@@ -109,13 +104,8 @@ pub fn crust(dt: &Triangulation) -> Vec<[u32; 2]> {
     // overlapping circumcircles, and a sweep along the medial axis keeps destroying the
     // untouched ones ahead of it; random rounds bound the expected total work.
     let mut order: Vec<u32> = (0..centres.len() as u32).collect();
-    Rng::new(SEED ^ order.len() as u64).shuffle(&mut order);
-    let mut end = order.len();
-    while end > 0 {
-        let start = if end / 2 < MIN_ROUND { 0 } else { end / 2 };
-        order[start..end].sort_unstable_by_key(|&i| (grid.key(centres[i as usize]), i));
-        end = start;
-    }
+    let samples = (0..m as u32).map(|v| dt.point(v).map(|x| x * scale));
+    brio_order_within(|i| centres[i as usize], &mut order, samples);
     for i in order {
         let [x, y] = centres[i as usize];
         if x.is_finite() && y.is_finite() && x.abs() <= MAX_ALLOWED && y.abs() <= MAX_ALLOWED {
@@ -166,68 +156,15 @@ fn range_scale(dt: &Triangulation, centres: &[Point]) -> f64 {
     2f64.powi(-needed.min(allowed).max(0))
 }
 
-/// A 2^16 × 2^16 grid over the samples' bounding box; points outside are clamped to it.
-struct HilbertGrid {
-    min: Point,
-    scale: [f64; 2],
-}
-
-impl HilbertGrid {
-    const BITS: u32 = 16;
-
-    fn new(points: impl Iterator<Item = Point>) -> HilbertGrid {
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for p in points {
-            for a in 0..2 {
-                lo[a] = lo[a].min(p[a]);
-                hi[a] = hi[a].max(p[a]);
-            }
-        }
-        let cells = f64::from((1u32 << Self::BITS) - 1);
-        let scale = [0, 1].map(|a| if hi[a] > lo[a] { cells / (hi[a] - lo[a]) } else { 0.0 });
-        HilbertGrid { min: lo, scale }
-    }
-
-    /// Position of `p`'s cell along the Hilbert curve (non-finite coordinates clamp too).
-    fn key(&self, p: Point) -> u32 {
-        let n = 1u32 << Self::BITS;
-        // `as u32` saturates and maps NaN to 0.
-        let cell = |a: usize| (((p[a] - self.min[a]) * self.scale[a]) as u32).min(n - 1);
-        let (mut x, mut y) = (cell(0), cell(1));
-        let mut d = 0u32;
-        let mut s = n / 2;
-        while s > 0 {
-            let (rx, ry) = (u32::from(x & s > 0), u32::from(y & s > 0));
-            d += s * s * ((3 * rx) ^ ry);
-            if ry == 0 {
-                if rx == 1 {
-                    x = n - 1 - x;
-                    y = n - 1 - y;
-                }
-                std::mem::swap(&mut x, &mut y);
-            }
-            s /= 2;
-        }
-        d
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::curves::regular_polygon;
+    use crate::testing::{cycle_edges as cycle, filter_edges};
     use crate::Edge;
 
     fn crust_edges(points: &[Point]) -> Vec<Edge> {
-        let dt = Triangulation::new(points).unwrap();
-        dt.to_input_edges(crust(&dt))
-    }
-
-    fn cycle(n: usize) -> Vec<Edge> {
-        let mut edges: Vec<Edge> =
-            (0..n).map(|i| [i.min((i + 1) % n), i.max((i + 1) % n)]).collect();
-        edges.sort_unstable();
-        edges
+        filter_edges(points, crust)
     }
 
     #[test]

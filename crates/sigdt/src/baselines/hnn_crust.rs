@@ -124,18 +124,11 @@ fn nearest(dt: &Triangulation, tree: &KdTree, points: &[Point], p: u32, k: usize
 mod tests {
     use super::*;
     use crate::curves::regular_polygon;
+    use crate::testing::{cycle_edges as cycle, filter_edges};
     use crate::Edge;
 
     fn hnn_crust_edges(points: &[Point]) -> Vec<Edge> {
-        let dt = Triangulation::new(points).unwrap();
-        dt.to_input_edges(hnn_crust(&dt))
-    }
-
-    fn cycle(n: usize) -> Vec<Edge> {
-        let mut edges: Vec<Edge> =
-            (0..n).map(|i| [i.min((i + 1) % n), i.max((i + 1) % n)]).collect();
-        edges.sort_unstable();
-        edges
+        filter_edges(points, hnn_crust)
     }
 
     #[test]

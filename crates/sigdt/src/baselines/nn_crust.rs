@@ -169,18 +169,11 @@ fn split(a: f64) -> (f64, f64) {
 mod tests {
     use super::*;
     use crate::curves::regular_polygon;
+    use crate::testing::{cycle_edges as cycle, filter_edges};
     use crate::Edge;
 
     fn nn_crust_edges(points: &[Point]) -> Vec<Edge> {
-        let dt = Triangulation::new(points).unwrap();
-        dt.to_input_edges(nn_crust(&dt))
-    }
-
-    fn cycle(n: usize) -> Vec<Edge> {
-        let mut edges: Vec<Edge> =
-            (0..n).map(|i| [i.min((i + 1) % n), i.max((i + 1) % n)]).collect();
-        edges.sort_unstable();
-        edges
+        filter_edges(points, nn_crust)
     }
 
     #[test]

@@ -24,8 +24,20 @@ const HILBERT_BITS: u32 = 16;
 
 /// Reorders `indices` (indices into `points`) into BRIO order, in place.
 pub fn brio_order(points: impl Fn(u32) -> [f64; 2], indices: &mut [u32]) {
+    let extent: Vec<[f64; 2]> = indices.iter().map(|&i| points(i)).collect();
+    brio_order_within(points, indices, extent.into_iter());
+}
+
+/// [`brio_order`] with the Hilbert grid laid over the bounding box of `extent` instead of
+/// the points' own; points outside it (or not finite) are clamped to its border cells. CRUST
+/// uses it to order Voronoi vertices on the samples' grid, unspoilt by far-away centres.
+pub fn brio_order_within(
+    points: impl Fn(u32) -> [f64; 2],
+    indices: &mut [u32],
+    extent: impl Iterator<Item = [f64; 2]>,
+) {
     shuffle(indices, SEED ^ indices.len() as u64);
-    let Some(bbox) = bounding_box(indices.iter().map(|&i| points(i))) else { return };
+    let Some(bbox) = bounding_box(extent) else { return };
     let mut keyed: Vec<u64> = Vec::with_capacity(indices.len());
     let mut end = indices.len();
     while end > 0 {

@@ -20,7 +20,7 @@
 //! O(n log n) expected time; about 140 bytes per point while spade's structure is alive,
 //! about 60 afterwards.
 
-mod brio;
+pub(crate) mod brio;
 mod build;
 mod hygiene;
 
