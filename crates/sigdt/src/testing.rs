@@ -89,13 +89,6 @@ pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<()
     Ok(())
 }
 
-/// The sorted edges of the cycle `0, 1, ..., n-1` (ground truth of points in curve order).
-pub fn cycle_edges(n: usize) -> Vec<Edge> {
-    let mut edges: Vec<Edge> = (0..n).map(|i| [i.min((i + 1) % n), i.max((i + 1) % n)]).collect();
-    edges.sort_unstable();
-    edges
-}
-
 /// The edges a graph filter (vertex pairs on the triangulation) gives for `points`, as
 /// sorted input-index pairs; for the baselines' unit tests.
 pub fn filter_edges(

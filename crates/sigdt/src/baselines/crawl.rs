@@ -149,7 +149,8 @@ fn second_nearest(dt: &Triangulation, v: u32) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::{cycle_edges as cycle, filter_edges};
+    use crate::curves::cycle_edges as cycle;
+    use crate::testing::filter_edges;
     use crate::Point;
 
     fn run(pts: &[Point]) -> Vec<crate::Edge> {
@@ -158,12 +159,7 @@ mod tests {
 
     #[test]
     fn regular_16_gon_is_its_cycle() {
-        let pts: Vec<Point> = (0..16)
-            .map(|i| {
-                let a = i as f64 * std::f64::consts::TAU / 16.0;
-                [a.cos(), a.sin()]
-            })
-            .collect();
+        let pts = crate::curves::regular_polygon(16, 1.0).points;
         assert_eq!(run(&pts), cycle(16));
     }
 

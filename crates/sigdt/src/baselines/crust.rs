@@ -159,8 +159,9 @@ fn range_scale(dt: &Triangulation, centres: &[Point]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::curves::cycle_edges as cycle;
     use crate::curves::regular_polygon;
-    use crate::testing::{cycle_edges as cycle, filter_edges};
+    use crate::testing::filter_edges;
     use crate::Edge;
 
     fn crust_edges(points: &[Point]) -> Vec<Edge> {

@@ -119,16 +119,8 @@ mod tests {
 
     #[test]
     fn regular_16_gon_is_its_cycle() {
-        let pts: Vec<Point> = (0..16)
-            .map(|i| {
-                let a = i as f64 * std::f64::consts::TAU / 16.0;
-                [a.cos(), a.sin()]
-            })
-            .collect();
-        let mut expected: Vec<crate::Edge> = (0..15).map(|i| [i, i + 1]).collect();
-        expected.insert(15, [0, 15]);
-        expected.sort_unstable();
-        assert_eq!(run(&pts), expected);
+        let gon = crate::curves::regular_polygon(16, 1.0);
+        assert_eq!(run(&gon.points), gon.edges);
     }
 
     #[test]

@@ -118,8 +118,9 @@ impl Sample {
     }
 }
 
-/// The edges of the cycle `0-1-…-(n-1)-0`, sorted (a single edge for `n = 2`).
-fn cycle_edges(n: usize) -> Vec<Edge> {
+/// The edges of the cycle `0-1-…-(n-1)-0`, sorted (a single edge for `n = 2`): the ground
+/// truth of points given in curve order.
+pub fn cycle_edges(n: usize) -> Vec<Edge> {
     let mut edges: Vec<Edge> = (1..n).map(|i| [i - 1, i]).collect();
     if n >= 3 {
         edges.push([0, n - 1]);

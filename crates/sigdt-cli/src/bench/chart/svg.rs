@@ -275,6 +275,15 @@ pub(super) fn escape(s: &str) -> String {
     out
 }
 
+/// Asserts a chart is well formed and has no NaN or infinite coordinate (test helper).
+#[cfg(test)]
+pub(crate) fn assert_clean(svg: &str) {
+    assert_well_formed(svg);
+    for bad in ["NaN", "inf"] {
+        assert!(!svg.contains(bad), "{bad} in\n{svg}");
+    }
+}
+
 /// Panics unless `xml` is well formed: balanced tags, quoted attributes, escaped text.
 #[cfg(test)]
 pub(crate) fn assert_well_formed(xml: &str) {
