@@ -25,7 +25,7 @@ pub fn sample(args: &SampleArgs) -> Result<()> {
     let path = pick(&paths, args.path, &args.svg)?;
     let labelled =
         eps_sample(path, args.eps, args.offset, args.lfs_noise, args.seed, !args.ordered)?;
-    write_labelled(&args.output, &labelled)
+    write_labelled(&args.output, &labelled, &args.svg)
 }
 
 /// `sigdt perturb`.
@@ -80,8 +80,9 @@ pub fn eps_sample(
     })
 }
 
-/// Writes `OUT.xy`, `OUT.gt` and, for noisy points, `OUT.truth.xy`, each atomically.
-pub fn write_labelled(out: &Path, labelled: &Labelled) -> Result<()> {
+/// Writes `OUT.xy`, `OUT.gt` and, for noisy points, `OUT.truth.xy`, each atomically. All
+/// three are checked before any is written; none may be `source`, the file read.
+pub fn write_labelled(out: &Path, labelled: &Labelled, source: &Path) -> Result<()> {
     let with = |ext: &str| -> PathBuf {
         let stem = out.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
         out.with_file_name(format!("{stem}.{ext}"))
@@ -92,13 +93,16 @@ pub fn write_labelled(out: &Path, labelled: &Labelled) -> Result<()> {
             out.display()
         );
     }
-    let none = Path::new("-");
-    Output::new(Some(out), none)?
-        .write(|w| w.write_all(points_text(&labelled.points).as_bytes()))?;
-    Output::new(Some(&with("gt")), none)?.write(|w| sigdt::io::write_edges(w, &labelled.gt))?;
-    if let Some(truth) = &labelled.truth {
-        Output::new(Some(&with("truth.xy")), none)?
-            .write(|w| w.write_all(points_text(truth).as_bytes()))?;
+    let points = Output::new(Some(out), source)?;
+    let gt = Output::new(Some(&with("gt")), source)?;
+    let truth = match &labelled.truth {
+        Some(clean) => Some((Output::new(Some(&with("truth.xy")), source)?, clean)),
+        None => None,
+    };
+    points.write(|w| w.write_all(points_text(&labelled.points).as_bytes()))?;
+    gt.write(|w| sigdt::io::write_edges(w, &labelled.gt))?;
+    if let Some((output, truth)) = truth {
+        output.write(|w| w.write_all(points_text(truth).as_bytes()))?;
     }
     Ok(())
 }

@@ -39,7 +39,7 @@ pub fn sweep(args: &SweepArgs) -> Result<()> {
         std::fs::create_dir_all(&dir)
             .with_context(|| format!("{}: cannot create the folder", dir.display()))?;
         let sets = generate(args, level, k as u64)?;
-        let cases = write_folder(&dir, &sets)?;
+        let cases = write_folder(&dir, &sets, &args.source)?;
         crate::run::note(&format!(
             "level {level}: {} sets x {} methods",
             cases.len(),
@@ -147,11 +147,11 @@ fn generate(args: &SweepArgs, level: f64, k: u64) -> Result<Vec<(String, Labelle
 }
 
 /// Writes the sets and their index.csv into `dir`; returns them as cases.
-fn write_folder(dir: &Path, sets: &[(String, Labelled)]) -> Result<Vec<Case>> {
+fn write_folder(dir: &Path, sets: &[(String, Labelled)], source: &Path) -> Result<Vec<Case>> {
     let mut index = String::from("name,category,n_points,epsilon\n");
     let mut cases = Vec::new();
     for (name, set) in sets {
-        write_labelled(&dir.join(format!("{name}.xy")), set)?;
+        write_labelled(&dir.join(format!("{name}.xy")), set, source)?;
         writeln!(index, "{name},sweep,{},", set.points.len()).expect("writing to a String");
         cases.push(Case {
             name: name.clone(),

@@ -28,6 +28,15 @@ pub fn bench(args: &BenchArgs) -> Result<()> {
     if cases.is_empty() {
         bail!("{}: no case matches", args.dir.join("index.csv").display());
     }
+    for (k, (label, _)) in args.imports.iter().enumerate() {
+        if methods.contains(label) || args.imports[..k].iter().any(|(l, _)| l == label) {
+            bail!("--import {label}=...: '{label}' already names a method or another import");
+        }
+    }
+    let same = |a: &std::path::Path, b: &std::path::Path| matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b);
+    if same(&args.out, &args.dir) {
+        bail!("{}: --out is the data folder; choose another folder", args.out.display());
+    }
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("{}: cannot create the output folder", args.out.display()))?;
     crate::run::note(&format!(

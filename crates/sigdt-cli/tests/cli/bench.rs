@@ -179,3 +179,21 @@ fn sweep_writes_a_table_and_charts() {
         assert!(fs::read_to_string(dir.path().join("sw").join(chart)).unwrap().contains("<svg"));
     }
 }
+
+#[test]
+fn outputs_never_replace_the_inputs() {
+    let data = labelled_folder();
+    let d = data.path().to_str().unwrap();
+    sigdt(&["bench", d, "--out", d]).error(&["--out is the data folder"]);
+    let imported = format!("connect2d={d}");
+    sigdt(&["bench", d, "--method", "connect2d", "--import", &imported])
+        .error(&["already names a method"]);
+    let dir = tempdir();
+    let svg = dir.path().join("c.svg");
+    fs::copy(simple_svg(), &svg).unwrap();
+    let before = fs::read(&svg).unwrap();
+    let s = svg.to_str().unwrap();
+    sigdt(&["sample", s, "--eps", "0.3", "-o", s]).error(&["refusing to overwrite"]);
+    assert_eq!(fs::read(&svg).unwrap(), before);
+    assert!(!dir.path().join("c.gt").exists(), "nothing written when one output is refused");
+}
