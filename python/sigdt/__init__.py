@@ -15,20 +15,26 @@ from ._api import proximity_graph, read_points, reconstruct, reconstruct_many
 from ._core import GRAPH_KINDS, METHODS, InternalError, InvalidInputError, ParseError, __version__
 from ._eval import evaluate, graph_epsilon, graph_overlap
 from ._result import Reconstruction
+from ._trace import PHASES, Trace, trace
+from .plot import plot_steps
 
 __all__ = [
     "GRAPH_KINDS",
     "METHODS",
+    "PHASES",
     "InternalError",
     "InvalidInputError",
     "ParseError",
     "Reconstruction",
+    "Trace",
     "__version__",
     "evaluate",
     "graph_epsilon",
     "graph_overlap",
+    "plot_steps",
     "proximity_graph",
     "read_points",
     "reconstruct",
     "reconstruct_many",
+    "trace",
 ]

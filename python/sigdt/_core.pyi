@@ -18,6 +18,16 @@ _Raw: TypeAlias = tuple[
     npt.NDArray[np.int64],  # duplicates (d, 2)
     dict[str, int],  # stats
 ]
+_Trace: TypeAlias = tuple[
+    npt.NDArray[np.int64],  # triangles (T, 3)
+    npt.NDArray[np.int64],  # graph (m, 2)
+    npt.NDArray[np.bool_],  # initial inside (T,)
+    npt.NDArray[np.int64],  # dangling (d, 2)
+    npt.NDArray[np.int64],  # step triangle (S,)
+    npt.NDArray[np.bool_],  # step inside (S,)
+    npt.NDArray[np.uint8],  # step phase (S,): 0 inflate, 1 pocket, 2 sculpt
+    int,  # inflated at
+]
 
 METHODS: list[str]
 GRAPH_KINDS: list[str]
@@ -34,6 +44,9 @@ def reconstruct_many(
     leaf_elimination: bool,
     n_jobs: int | None = None,
 ) -> list[_Raw]: ...
+def trace(
+    points: npt.NDArray[np.float64], method: str, leaf_elimination: bool
+) -> _Trace | None: ...
 def proximity_graph(
     points: npt.NDArray[np.float64], kind: str, k: int | None = None
 ) -> npt.NDArray[np.int64]: ...

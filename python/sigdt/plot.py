@@ -1,4 +1,5 @@
-"""Matplotlib drawing of a :class:`~sigdt.Reconstruction` (matplotlib imported lazily)."""
+"""Matplotlib drawings of a :class:`~sigdt.Reconstruction` and of the steps of a run
+(matplotlib imported lazily)."""
 
 from __future__ import annotations
 
@@ -6,10 +7,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ._trace import trace
+
 if TYPE_CHECKING:  # pragma: no cover
     from ._result import Reconstruction
+    from ._trace import Trace
 
-__all__ = ["plot"]
+__all__ = ["plot", "plot_steps"]
 
 
 def plot(rec: Reconstruction, ax: Any = None, **style: Any) -> Any:
@@ -48,3 +52,127 @@ def plot(rec: Reconstruction, ax: Any = None, **style: Any) -> Any:
     ax.autoscale_view()
     ax.set_title(f"{len(pts)} points, {len(rec.edges)} edges, {rec.status}")
     return ax
+
+
+def plot_steps(
+    points: Any,
+    *,
+    steps: Any = None,
+    method: str = "sig-connect2d",
+    ncols: int = 4,
+    axes: Any = None,
+) -> Any:
+    """Draw inflating and sculpting step by step, one panel per chosen step.
+
+    Each panel shows the Delaunay triangles (faint), the interior triangles (filled), the
+    triangle the step just relabelled (orange), the boundary after that step and the
+    points, titled ``"start"``, ``"inflate k/K"`` or ``"sculpt k/K"``.
+
+    Parameters
+    ----------
+    points : array_like, shape (n, 2)
+        Anything numpy turns into an ``(n, 2)`` float64 array.
+    steps : sequence of int, optional
+        Step counts to draw, each in ``0..=trace.n_steps`` (see :func:`sigdt.trace`).
+        Default: the start, two inflate steps, the end of inflating, two sculpt steps and
+        the final result (fewer when steps coincide).
+    method : str, default "sig-connect2d"
+        ``"sig-connect2d"`` or ``"connect2d"`` (the methods that inflate and sculpt).
+    ncols : int, default 4
+        Panels per row when ``axes`` is not given.
+    axes : sequence of matplotlib.axes.Axes, optional
+        Axes to draw in, at least one per step (any array shape; extra ones are left
+        untouched). Default: a new figure with a grid of panels.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure of the panels.
+
+    Raises
+    ------
+    ValueError
+        The method neither inflates nor sculpts, the input is degenerate (no triangles),
+        ``ncols`` < 1, or there are fewer ``axes`` than steps.
+    IndexError
+        A step is outside ``0..=n_steps``.
+    InvalidInputError
+        Wrong shape or non-finite coordinates. (A subclass of ValueError.)
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import numpy as np, sigdt
+    >>> t = np.linspace(0, 2 * np.pi, 12, endpoint=False)
+    >>> points = np.r_[np.c_[np.cos(t), np.sin(t)], [[0, 0]]]
+    >>> fig = sigdt.plot_steps(points)
+    >>> [ax.get_title() for ax in fig.axes]
+    ['start', 'sculpt 1/1']
+    """
+    import matplotlib.pyplot as plt
+
+    tr = trace(points, method=method)
+    if tr is None:
+        raise ValueError(
+            f"no steps to draw: method {method!r} does not inflate or sculpt, or the input "
+            "has no triangles (fewer than three distinct points, or all collinear)"
+        )
+    if steps is None:
+        steps = _default_steps(tr.n_steps, tr.inflated_at)
+    steps = [tr._check_step(k) for k in steps]
+    if isinstance(ncols, bool) or not isinstance(ncols, int) or ncols < 1:
+        raise ValueError(f"ncols must be a positive int, got {ncols!r}")
+    if axes is None:
+        nrows = max(1, -(-len(steps) // ncols))
+        cols = max(1, min(ncols, len(steps)))
+        fig, grid = plt.subplots(
+            nrows, cols, figsize=(3 * cols, 3 * nrows), squeeze=False, layout="constrained"
+        )
+        axes = list(grid.ravel())
+        for ax in axes[len(steps) :]:
+            ax.remove()
+    else:
+        axes = list(np.ravel(np.asarray(axes, dtype=object)))
+        if len(axes) < len(steps):
+            raise ValueError(f"{len(steps)} steps need as many axes, got {len(axes)}")
+        fig = axes[0].figure if axes else plt.figure()
+    for ax, k in zip(axes, steps):
+        _draw_step(ax, tr, k)
+    return fig
+
+
+def _default_steps(n_steps: int, inflated_at: int) -> list[int]:
+    """Start, two inflate steps, end of inflating, two sculpt steps, final."""
+    inflate = np.linspace(0, inflated_at, 4).round().astype(int)
+    sculpt = np.linspace(inflated_at, n_steps, 4).round().astype(int)
+    return sorted({int(k) for k in np.r_[inflate, sculpt]})
+
+
+def _step_title(tr: Trace, k: int) -> str:
+    if k == 0:
+        return "start"
+    if k <= tr.inflated_at:
+        return f"inflate {k}/{tr.inflated_at}"
+    return f"sculpt {k - tr.inflated_at}/{tr.n_steps - tr.inflated_at}"
+
+
+def _draw_step(ax: Any, tr: Trace, k: int) -> None:
+    from matplotlib.collections import LineCollection, PolyCollection
+
+    pts = np.asarray(tr.points)
+    edges = tr._edge_sides()[0]
+    ax.add_collection(LineCollection(pts[edges], colors="#d0d0d0", linewidths=0.4, zorder=0))
+    inside = tr.inside_at(k)
+    ax.add_collection(PolyCollection(pts[tr.triangles[inside]], facecolors="#dbe9f6", zorder=1))
+    if k > 0:
+        last = pts[tr.triangles[tr.step_triangle[k - 1 : k]]]
+        ax.add_collection(PolyCollection(last, facecolors="#f5b041", alpha=0.8, zorder=2))
+    boundary = tr.boundary_at(k)
+    ax.add_collection(LineCollection(pts[boundary], colors="#1f4e79", linewidths=1.2, zorder=3))
+    ax.plot(*pts.T, "o", color="#c0392b", markersize=2, zorder=4)
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.set_xticks([])
+    ax.set_yticks([])
+    ax.set_title(_step_title(tr, k))

@@ -38,10 +38,12 @@ def test_the_public_functions_are_the_expected_ones():
         "evaluate",
         "graph_epsilon",
         "graph_overlap",
+        "plot_steps",
         "proximity_graph",
         "read_points",
         "reconstruct",
         "reconstruct_many",
+        "trace",
     ]
 
 

@@ -5,7 +5,7 @@ use numpy::{
 use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
-use sigdt::{Edge, Point, Reconstruction, Status};
+use sigdt::{Edge, Phase, Point, Reconstruction, Status, Trace};
 
 pyo3::create_exception!(
     sigdt,
@@ -122,6 +122,33 @@ pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bo
             indices(py, left_out).into_any(),
             edges(py, &rec.duplicates)?.into_any(),
             stats.into_any(),
+        ],
+    )
+}
+
+/// The tuple `python/sigdt/_trace.py` builds a `Trace` from: `(triangles (T, 3) int64,
+/// graph (m, 2) int64, initial_inside (T,) bool, dangling (d, 2) int64, step_triangle (S,)
+/// int64, step_inside (S,) bool, step_phase (S,) uint8, inflated_at)`; phase codes index
+/// `Phase::ALL` (0 inflate, 1 pocket, 2 sculpt).
+pub fn trace<'py>(py: Python<'py>, trace: &Trace) -> PyResult<Bound<'py, PyTuple>> {
+    let flat: Vec<i64> = trace.triangles.iter().flatten().map(|&v| v as i64).collect();
+    let triangles = flat.into_pyarray(py).reshape([trace.triangles.len(), 3])?;
+    let steps = &trace.steps;
+    let step_triangle: Vec<usize> = steps.iter().map(|s| s.triangle).collect();
+    let step_inside: Vec<bool> = steps.iter().map(|s| s.inside).collect();
+    let code = |p: Phase| Phase::ALL.iter().position(|&q| q == p).unwrap_or(0) as u8;
+    let step_phase: Vec<u8> = steps.iter().map(|s| code(s.phase)).collect();
+    PyTuple::new(
+        py,
+        [
+            triangles.into_any(),
+            edges(py, &trace.graph)?.into_any(),
+            trace.initial_inside.clone().into_pyarray(py).into_any(),
+            edges(py, &trace.dangling)?.into_any(),
+            indices(py, &step_triangle).into_any(),
+            step_inside.into_pyarray(py).into_any(),
+            step_phase.into_pyarray(py).into_any(),
+            trace.inflated_at.into_pyobject(py)?.into_any(),
         ],
     )
 }

@@ -87,6 +87,24 @@ fn reconstruct_many<'py>(
     Ok(list)
 }
 
+/// `trace(points, method, leaf_elimination) -> tuple | None` (see convert::trace): the
+/// steps of inflating and sculpting, `None` for graph filters and degenerate input.
+#[pyfunction]
+fn trace<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    method: &str,
+    leaf_elimination: bool,
+) -> PyResult<Option<Bound<'py, PyTuple>>> {
+    let options = options(method, leaf_elimination)?;
+    let pts = convert::points(&points)?;
+    let (_, trace) = py
+        .detach(|| guarded(|| sigdt::reconstruct_traced(pts, &options)))
+        .map_err(InternalError::new_err)?
+        .map_err(err)?;
+    trace.map(|t| convert::trace(py, &t)).transpose()
+}
+
 /// `proximity_graph(points, kind, k) -> (m, 2) int64 array`.
 #[pyfunction]
 #[pyo3(signature = (points, kind, k=None))]
@@ -122,6 +140,7 @@ fn read_points<'py>(
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(reconstruct, m)?)?;
     m.add_function(wrap_pyfunction!(reconstruct_many, m)?)?;
+    m.add_function(wrap_pyfunction!(trace, m)?)?;
     m.add_function(wrap_pyfunction!(proximity_graph, m)?)?;
     m.add_function(wrap_pyfunction!(read_points, m)?)?;
     m.add_function(wrap_pyfunction!(eval::evaluate, m)?)?;

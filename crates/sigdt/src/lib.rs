@@ -34,7 +34,10 @@ pub use delaunay::Triangulation;
 pub use error::{Error, Result};
 pub use geometry::Point;
 pub use proximity::{proximity_graph, GraphKind};
-pub use reconstruct::{reconstruct, Method, Options, Reconstruction, Stats, Status};
+pub use reconstruct::{
+    reconstruct, reconstruct_traced, Method, Options, Phase, Reconstruction, Stats, Status, Step,
+    Trace,
+};
 
 /// An undirected edge `[i, j]` between input point indices, `i < j`.
 pub type Edge = [usize; 2];

@@ -17,6 +17,7 @@
 //! [OM13]: https://doi.org/10.1111/cgf.12227
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 use crate::delaunay::Triangulation;
+use crate::graph::EdgeMask;
 use crate::proximity::{emst::emst_mask, leaf_elimination::eliminate_leaves};
 use crate::reconstruct::degenerate::degenerate_result;
 use crate::reconstruct::inflate_sculpt::inflate_and_sculpt;
@@ -33,9 +34,15 @@ pub fn connect2d_on(dt: &Triangulation) -> Reconstruction {
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
+    let (graph, leaf_edges_added) = bc0(dt);
+    inflate_and_sculpt(dt, &graph, leaf_edges_added)
+}
+
+/// BC₀ on a proper triangulation, and the number of leaf edges added to the EMST.
+pub fn bc0(dt: &Triangulation) -> (EdgeMask, usize) {
     let mut graph = emst_mask(dt);
     let leaf_edges_added = eliminate_leaves(dt, &mut graph);
-    inflate_and_sculpt(dt, &graph, leaf_edges_added)
+    (graph, leaf_edges_added)
 }
 
 #[cfg(test)]

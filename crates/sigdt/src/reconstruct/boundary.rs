@@ -17,6 +17,7 @@
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
+use super::trace::{Phase, Step};
 use crate::delaunay::{prev, Triangulation, EMPTY};
 use crate::graph::{EdgeMask, UnionFind};
 
@@ -48,6 +49,9 @@ pub struct Boundary<'a> {
     pub non_manifold: usize,
     /// Number of interior vertices.
     pub interior: usize,
+    /// Every label change after [`Boundary::from_graph`], in order, when recording
+    /// ([`crate::reconstruct::trace`]); `None` (the default) records nothing.
+    pub trace: Option<Vec<Step>>,
     /// Visit stamps per triangle for pocket searches.
     pub(crate) stamp: Vec<u32>,
     pub(crate) epoch: u32,
@@ -82,6 +86,7 @@ impl<'a> Boundary<'a> {
             components: UnionFind::new(0),
             non_manifold: 0,
             interior: 0,
+            trace: None,
             stamp: Vec::new(),
             epoch: 0,
         };
@@ -147,6 +152,16 @@ impl<'a> Boundary<'a> {
             debug_assert_eq!(class, self.classify(v as u32));
             self.class[v] = class;
             self.count(class, 1);
+        }
+    }
+
+    /// Sets the label of triangle `t`, recording the change when tracing.
+    #[inline]
+    pub fn set_inside(&mut self, t: u32, inside: bool, phase: Phase) {
+        debug_assert_ne!(self.inside[t as usize], inside, "not a label change");
+        self.inside[t as usize] = inside;
+        if let Some(steps) = &mut self.trace {
+            steps.push(Step { triangle: t as usize, inside, phase });
         }
     }
 

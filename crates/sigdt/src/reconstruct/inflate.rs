@@ -34,6 +34,7 @@ use super::boundary::{Boundary, VertexClass};
 use super::pocket::fill_pocket;
 use super::queue::CandidateQueue;
 use super::result::Stats;
+use super::trace::Phase;
 use crate::delaunay::{next, prev, EMPTY};
 use crate::graph::EdgeMask;
 
@@ -109,7 +110,7 @@ fn accept(bd: &mut Boundary<'_>, t: u32, stats: &mut Stats) -> Vec<u32> {
         let c = dt.origin(prev(ab));
         bd.components.find(c) == bd.components.find(dt.origin(ab))
     };
-    bd.inside[t as usize] = true;
+    bd.set_inside(t, true, Phase::Inflate);
     for h in 3 * t..3 * t + 3 {
         if !bd.edges.contains(h) {
             bd.edges.set(dt, h, true);

@@ -17,6 +17,7 @@
 //! Lockstep search costs O(size of the smaller side) plus O(pocket); a triangle is filled at
 //! most once, so O(n) over a whole run.
 use super::boundary::Boundary;
+use super::trace::Phase;
 use crate::delaunay::EMPTY;
 
 struct Search {
@@ -100,7 +101,7 @@ fn step(bd: &mut Boundary<'_>, s: &mut Search, base: u32) -> Step {
 /// Makes the pocket interior and drops boundary edges now interior on both sides.
 fn fill(bd: &mut Boundary<'_>, pocket: Vec<u32>) -> Vec<u32> {
     for &t in &pocket {
-        bd.inside[t as usize] = true;
+        bd.set_inside(t, true, Phase::Pocket);
     }
     for &t in &pocket {
         for h in 3 * t..3 * t + 3 {

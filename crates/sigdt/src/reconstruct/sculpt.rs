@@ -28,6 +28,7 @@
 use super::boundary::{Boundary, VertexClass};
 use super::queue::CandidateQueue;
 use super::result::Stats;
+use super::trace::Phase;
 use crate::delaunay::{next, prev, EMPTY};
 
 /// Runs sculpting until no interior vertex is left or no candidate remains.
@@ -46,7 +47,7 @@ pub fn sculpt(bd: &mut Boundary<'_>, stats: &mut Stats) {
             continue;
         }
         let dt = bd.dt;
-        bd.inside[c.t as usize] = false;
+        bd.set_inside(c.t, false, Phase::Sculpt);
         bd.edges.set(dt, ab, false);
         bd.edges.set(dt, next(ab), true);
         bd.edges.set(dt, prev(ab), true);

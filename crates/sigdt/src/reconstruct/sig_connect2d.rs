@@ -23,6 +23,7 @@ use super::degenerate::degenerate_result;
 use super::inflate_sculpt::inflate_and_sculpt;
 use super::result::Reconstruction;
 use crate::delaunay::Triangulation;
+use crate::graph::EdgeMask;
 use crate::proximity::{
     leaf_elimination::eliminate_leaves_with_degrees, sigdt::sigdt_with_degrees,
 };
@@ -39,8 +40,15 @@ pub fn sig_connect2d_on(dt: &Triangulation, leaf_elimination: bool) -> Reconstru
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
+    let (graph, leaf_edges_added) = initial_graph(dt, leaf_elimination);
+    inflate_and_sculpt(dt, &graph, leaf_edges_added)
+}
+
+/// The graph inflating starts from, SIGDT or (with leaf elimination) SIGDT2, and the number
+/// of leaf edges added, on a proper triangulation.
+pub fn initial_graph(dt: &Triangulation, leaf_elimination: bool) -> (EdgeMask, usize) {
     let (mut graph, degree) = sigdt_with_degrees(dt);
     let leaf_edges_added =
         if leaf_elimination { eliminate_leaves_with_degrees(dt, &mut graph, degree) } else { 0 };
-    inflate_and_sculpt(dt, &graph, leaf_edges_added)
+    (graph, leaf_edges_added)
 }
