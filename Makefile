@@ -7,7 +7,11 @@ TARGET_DIR := $(or $(CARGO_TARGET_DIR),target)
 SIGDT := $(TARGET_DIR)/release/sigdt
 DEMO := glyph_n_tilde
 
-.PHONY: all build demo test lint rust-test doc bench bench-python report clean py-build py-test py-lint
+# The viewer's browser test drives Debian's chromium (installed here if missing; needs root
+# and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
+CHROMIUM ?= /usr/bin/chromium
+
+.PHONY: browser all build demo test lint rust-test doc bench bench-python report clean py-build py-test py-lint
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -49,7 +53,16 @@ py-lint: $(VENV)/.installed
 	$(VENV)/bin/ruff check python
 	$(VENV)/bin/ruff format --check python
 
-py-test: py-build py-lint build
+browser:
+	@if [ ! -x $(CHROMIUM) ]; then \
+	  if command -v apt-get >/dev/null && [ "$$(id -u)" = 0 ]; then \
+	    echo "installing Debian's chromium for the viewer's browser test"; \
+	    DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
+	  else echo "chromium is missing at $(CHROMIUM): install Debian's chromium (apt-get install chromium)" >&2; exit 1; fi; \
+	fi
+
+py-test: py-build py-lint build browser
 	$(VPY) -m pytest -q
 
 lint:

@@ -14,6 +14,7 @@ use sigdt::Method;
 use crate::args_bench::method_parser;
 pub use crate::args_bench::{BenchArgs, EvalArgs, WorkerArgs};
 pub use crate::args_generate::{PerturbArgs, SampleArgs, SweepArgs};
+pub use crate::args_view::{RenderArgs, ViewArgs};
 
 /// The input formats, shown in `sigdt --help` and `sigdt <command> --help`.
 const INPUT_FORMATS: &str = "\
@@ -98,6 +99,12 @@ pub enum Command {
     /// RMSE and exact rate of every method against noise, outliers, lfs noise or eps,
     /// with charts (the paper's Figures 14, 16, 17, 18).
     Sweep(SweepArgs),
+    /// Draw the points and chosen layers (Delaunay, SIG circles, SIGDT, SIGDT2, boundary
+    /// after inflating, result, ground truth with missing and extra edges) as SVG or PNG.
+    Render(RenderArgs),
+    /// Write a self-contained HTML viewer: pan, zoom, layer toggles, and a slider that
+    /// replays inflating and sculpting one triangle at a time.
+    View(ViewArgs),
     /// Internal: one method on one case, for `sigdt bench`.
     #[command(hide = true)]
     BenchWorker(WorkerArgs),

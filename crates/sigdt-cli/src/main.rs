@@ -7,11 +7,15 @@
 mod args;
 mod args_bench;
 mod args_generate;
+mod args_view;
 mod bench;
 mod generate;
 mod output;
+mod picture;
+mod png;
 mod run;
 mod sweep;
+mod view;
 
 use std::process::ExitCode;
 

@@ -22,6 +22,8 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Sample(args) => crate::generate::sample(&args),
         Command::Perturb(args) => crate::generate::perturb(&args),
         Command::Sweep(args) => crate::sweep::sweep(&args),
+        Command::Render(args) => crate::picture::render(&args),
+        Command::View(args) => crate::picture::view(&args),
     }
 }
 

@@ -28,6 +28,7 @@ pub mod graph;
 pub mod io;
 pub mod proximity;
 pub mod reconstruct;
+pub mod render;
 pub mod testing;
 
 pub use delaunay::Triangulation;

@@ -5,14 +5,13 @@
 //!   [`Error::Parse`](crate::Error::Parse) naming the file and the 1-based line. The line
 //!   reader lives in `lines`, the `.gtn` format in `gtn` and the edge reader in `edges`.
 //! - [`write`](mod@write): writers for edge lists, ordered loops, WKT, GeoJSON and SVG; the
-//!   SVG picture, [`svg()`], is drawn in `svg`.
+//!   SVG picture is drawn by [`render_svg`](crate::render::render_svg).
 
 mod edges;
 mod gtn;
 mod lines;
 pub mod points;
-mod svg;
 pub mod write;
 
 pub use points::{parse_edges, parse_points, read_edges, read_points, PointFormat, MAX_LINE};
-pub use write::{svg, write_edges, write_reconstruction, OutputFormat};
+pub use write::{write_edges, write_reconstruction, OutputFormat};

@@ -1,5 +1,5 @@
 //! Writers for reconstructions: edge lists, ordered loops, WKT, GeoJSON and SVG (drawn by
-//! [`svg()`]).
+//! [`render_svg`]).
 //!
 //! Text is built in memory and written with one `write_all`, so a million edges take a few
 //! dozen milliseconds and the writer needs no buffering of its own. Coordinates
@@ -11,7 +11,7 @@ use std::io::{self, Write};
 use std::path::Path;
 use std::str::FromStr;
 
-pub use super::svg::svg;
+use crate::render::{render_svg, Layers, RenderOptions};
 use crate::{Edge, Point, Reconstruction, Status};
 
 /// An output format. Spelled `edges`, `loops`, `wkt`, `geojson` and `svg`; [`FromStr`] and
@@ -27,7 +27,7 @@ pub enum OutputFormat {
     Wkt,
     /// One GeoJSON `Feature` with the loops and paths as geometry and counts as properties.
     GeoJson,
-    /// A standalone SVG picture of the points, edges and filled loops.
+    /// A standalone SVG picture of the points, edges and filled loops, with a legend.
     Svg,
 }
 
@@ -128,10 +128,16 @@ pub fn write_reconstruction<W: Write>(
             }
             out.extend_from_slice(b"}}\n");
         }
-        OutputFormat::Svg => out = svg(points, &rec.edges, &rec.loops).into_bytes(),
+        OutputFormat::Svg => out = picture(points, rec).into_bytes(),
     }
     w.write_all(&out)?;
     w.flush()
+}
+
+/// The SVG output: the points and the result, with the default [`RenderOptions`].
+fn picture(points: &[Point], rec: &Reconstruction) -> String {
+    let layers = Layers { points: true, result: Some(rec), ..Layers::default() };
+    render_svg(points, &layers, &RenderOptions::default())
 }
 
 /// Writes `edges` to `w`, one `i j` a line, in the order given.
@@ -316,7 +322,11 @@ mod tests {
 
     #[test]
     fn svg_is_the_picture() {
-        let picture = text(OutputFormat::Svg, &SQUARE, &square());
-        assert_eq!(picture, svg(&SQUARE, &square().edges, &square().loops));
+        let svg = text(OutputFormat::Svg, &SQUARE, &square());
+        assert_eq!(svg, picture(&SQUARE, &square()));
+        assert!(svg.starts_with("<svg ") && svg.ends_with("</svg>\n"), "{svg}");
+        assert!(svg.contains("points 4") && svg.contains("result 4 edges, 1 loop"), "{svg}");
+        let empty = text(OutputFormat::Svg, &[], &empty());
+        assert!(empty.ends_with("</svg>\n") && !empty.contains("NaN"), "{empty}");
     }
 }

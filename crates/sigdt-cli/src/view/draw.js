@@ -1,0 +1,316 @@
+// draw.js: the camera (pan, zoom, fit) and the canvas drawing, one path per layer.
+//
+// Screen position of point i: (x * scale + tx, ty - y * scale), y pointing up. Coordinates
+// are transformed here rather than by the canvas, so line widths stay in screen pixels.
+
+/** The layers, in legend order. `on`: shown at start (with a trace / without one). */
+const LAYERS = [
+  { id: "points", label: "points", color: "#1b1f27", on: [1, 1] },
+  { id: "dt", label: "DT", color: "#b8bec8", width: 0.8, on: [0, 0] },
+  { id: "sig", label: "SIG circles", color: "rgba(66, 133, 244, 0.45)", width: 0.8, on: [0, 0] },
+  { id: "sigdt", label: "SIGDT", color: "#3d7fd9", width: 1.3, on: [0, 0] },
+  { id: "sigdt2", label: "SIGDT2 (leaf edges)", color: "#c39bf0", width: 4, on: [0, 0] },
+  { id: "boundary", label: "inflated boundary", color: "#f28e1c", width: 2, dash: [7, 5], on: [0, 0] },
+  { id: "result", label: "result", color: "#d62728", width: 1.6, on: [1, 1] },
+  { id: "gt", label: "ground truth", color: "rgba(44, 170, 90, 0.38)", width: 8, on: [0, 1] },
+  { id: "interior", label: "interior (step)", color: "rgba(240, 186, 80, 0.38)", fill: true, on: [1, 0] },
+  { id: "current", label: "boundary (step)", color: "rgba(27, 31, 39, 0.85)", width: 3, on: [1, 0] },
+];
+const DRAW_ORDER = ["interior", "gt", "dt", "sigdt2", "sigdt", "sig", "current", "boundary", "result", "points"];
+const STEP_COLORS = { i: "rgba(36, 170, 80, 0.75)", p: "rgba(0, 150, 170, 0.75)", s: "rgba(214, 39, 40, 0.7)" };
+const BACKGROUND = "#fbfbfa";
+
+const clamp = (x, lo, hi) => Math.min(Math.max(x, lo), hi);
+
+function View(canvas, model) {
+  this.canvas = canvas;
+  this.ctx = canvas.getContext("2d");
+  this.model = model;
+  this.scale = 1;
+  this.tx = 0;
+  this.ty = 0;
+  this.sx = new Float64Array(model.n);
+  this.sy = new Float64Array(model.n);
+  this.width = 0;
+  this.height = 0;
+  this.pending = false;
+  this.visible = {};
+  this.step = 0;
+  this.stepEdges = null; // boundary at this.step, computed once per step
+  this.hover = -1;
+}
+
+/** Matches the canvas to its CSS size and the device pixel ratio. */
+View.prototype.resize = function () {
+  const dpr = window.devicePixelRatio || 1;
+  const rect = this.canvas.getBoundingClientRect();
+  this.width = Math.max(1, rect.width);
+  this.height = Math.max(1, rect.height);
+  this.canvas.width = Math.round(this.width * dpr);
+  this.canvas.height = Math.round(this.height * dpr);
+  this.ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+};
+
+/** Centres the points with a margin of 24 screen pixels. */
+View.prototype.fit = function () {
+  const [x0, y0, x1, y1] = this.model.bounds();
+  const margin = 24;
+  const w = Math.max(x1 - x0, 1e-300);
+  const h = Math.max(y1 - y0, 1e-300);
+  this.scale = Math.min((this.width - 2 * margin) / w, (this.height - 2 * margin) / h);
+  if (!Number.isFinite(this.scale) || this.scale <= 0) this.scale = 1;
+  this.tx = this.width / 2 - ((x0 + x1) / 2) * this.scale;
+  this.ty = this.height / 2 + ((y0 + y1) / 2) * this.scale;
+  this.request();
+};
+
+/** Zooms by `factor` keeping the point under screen position (mx, my) in place. */
+View.prototype.zoom = function (factor, mx, my) {
+  this.scale *= factor;
+  this.tx = mx - (mx - this.tx) * factor;
+  this.ty = my - (my - this.ty) * factor;
+  this.request();
+};
+
+View.prototype.pan = function (dx, dy) {
+  this.tx += dx;
+  this.ty += dy;
+  this.request();
+};
+
+/** The point within `radius` pixels of (mx, my) nearest to it, or -1. */
+View.prototype.pick = function (mx, my, radius) {
+  let best = -1;
+  let bestD = radius * radius;
+  for (let i = 0; i < this.model.n; i++) {
+    const d = (this.sx[i] - mx) ** 2 + (this.sy[i] - my) ** 2;
+    if (d < bestD) [best, bestD] = [i, d];
+  }
+  return best;
+};
+
+/** Schedules one redraw on the next animation frame. */
+View.prototype.request = function () {
+  if (this.pending) return;
+  this.pending = true;
+  requestAnimationFrame(() => {
+    this.pending = false;
+    this.draw();
+  });
+};
+
+View.prototype.draw = function () {
+  const { ctx, model, sx, sy } = this;
+  for (let i = 0; i < model.n; i++) {
+    sx[i] = model.xs[i] * this.scale + this.tx;
+    sy[i] = this.ty - model.ys[i] * this.scale;
+  }
+  ctx.fillStyle = BACKGROUND;
+  ctx.fillRect(0, 0, this.width, this.height);
+  ctx.lineCap = "round";
+  ctx.lineJoin = "round";
+  const trace = model.trace;
+  for (const id of DRAW_ORDER) {
+    if (!this.visible[id]) continue;
+    const style = LAYERS.find((l) => l.id === id);
+    if (id === "points") this.drawPoints(style);
+    else if (id === "sig") this.drawCircles(style);
+    else if (id === "interior" && trace) this.drawInterior(style);
+    else if (id === "current" && trace) this.strokeEdges(this.currentBoundary().edges, style);
+    else if (model.edges[id]) this.strokeEdges(model.edges[id], style);
+  }
+  if (this.hover >= 0) {
+    ctx.beginPath();
+    ctx.arc(sx[this.hover], sy[this.hover], 7, 0, 2 * Math.PI);
+    ctx.lineWidth = 2;
+    ctx.strokeStyle = "#d62728";
+    ctx.stroke();
+  }
+};
+
+/** Whether segment (x0, y0)-(x1, y1), widened by `pad`, surely misses the canvas. */
+View.prototype.off = function (x0, y0, x1, y1, pad) {
+  const w = this.width + pad;
+  const h = this.height + pad;
+  return (x0 < -pad && x1 < -pad) || (x0 > w && x1 > w) || (y0 < -pad && y1 < -pad) || (y0 > h && y1 > h);
+};
+
+// Big paths are drawn in chunks: the rasteriser slows down more than linearly with size.
+const CHUNK = 1024;
+
+/** The edges of a flat edge array that cross the canvas and leave their pixel. */
+View.prototype.visibleEdges = function (edges, pad) {
+  const { sx, sy } = this;
+  const shown = [];
+  for (let k = 0; 2 * k < edges.length; k++) {
+    const i = edges[2 * k];
+    const j = edges[2 * k + 1];
+    if (this.off(sx[i], sy[i], sx[j], sy[j], pad)) continue;
+    // An edge inside one pixel: the edges that leave that pixel cover it.
+    if (Math.round(sx[i]) === Math.round(sx[j]) && Math.round(sy[i]) === Math.round(sy[j])) continue;
+    shown.push(k);
+  }
+  return shown;
+};
+
+/**
+ * Strokes the edges of a flat edge array. Wide and dashed lines are slow to
+ * rasterise, so beyond 20,000 visible edges they are drawn as plain hairlines.
+ */
+View.prototype.strokeEdges = function (edges, style) {
+  if (!edges) return;
+  const { ctx, sx, sy } = this;
+  const shown = this.visibleEdges(edges, style.width);
+  const many = shown.length > 20000;
+  ctx.setLineDash(many ? [] : style.dash || []);
+  ctx.lineWidth = many ? Math.min(style.width, 1) : style.width;
+  ctx.lineCap = many ? "butt" : "round";
+  ctx.strokeStyle = style.color;
+  for (let c = 0; c < shown.length; c += CHUNK) {
+    ctx.beginPath();
+    for (const k of shown.slice(c, c + CHUNK)) {
+      ctx.moveTo(sx[edges[2 * k]], sy[edges[2 * k]]);
+      ctx.lineTo(sx[edges[2 * k + 1]], sy[edges[2 * k + 1]]);
+    }
+    ctx.stroke();
+  }
+  ctx.setLineDash([]);
+};
+
+View.prototype.drawPoints = function (style) {
+  const { ctx, sx, sy } = this;
+  const n = this.model.n;
+  const r = n > 20000 ? 1.2 : n > 2000 ? 1.8 : 2.6;
+  // With many points, one dot per pixel is enough.
+  const [w, h] = [Math.ceil(this.width), Math.ceil(this.height)];
+  const seen = n > 5000 ? new Uint8Array(w * h) : null;
+  ctx.fillStyle = style.color;
+  ctx.beginPath();
+  let size = 0;
+  for (let i = 0; i < n; i++) {
+    if (this.off(sx[i], sy[i], sx[i], sy[i], r)) continue;
+    if (seen) {
+      const p = clamp(Math.floor(sy[i]), 0, h - 1) * w + clamp(Math.floor(sx[i]), 0, w - 1);
+      if (seen[p]) continue;
+      seen[p] = 1;
+    }
+    if (n > 20000) {
+      ctx.rect(sx[i] - r, sy[i] - r, 2 * r, 2 * r);
+    } else {
+      ctx.moveTo(sx[i] + r, sy[i]);
+      ctx.arc(sx[i], sy[i], r, 0, 2 * Math.PI);
+    }
+    if (++size === CHUNK) {
+      ctx.fill();
+      ctx.beginPath();
+      size = 0;
+    }
+  }
+  ctx.fill();
+};
+
+View.prototype.drawCircles = function (style) {
+  const { ctx, sx, sy } = this;
+  const nn = this.model.nn;
+  ctx.lineWidth = style.width;
+  ctx.strokeStyle = style.color;
+  ctx.beginPath();
+  let size = 0;
+  for (let i = 0; i < this.model.n; i++) {
+    const r = nn[i] * this.scale;
+    if (r < 0.5 || this.off(sx[i], sy[i], sx[i], sy[i], r)) continue;
+    ctx.moveTo(sx[i] + r, sy[i]);
+    ctx.arc(sx[i], sy[i], r, 0, 2 * Math.PI);
+    if (++size === CHUNK) {
+      ctx.stroke();
+      ctx.beginPath();
+      size = 0;
+    }
+  }
+  ctx.stroke();
+};
+
+/**
+ * The interior at the current step, filled through its boundary cycles (nonzero rule), or
+ * triangle by triangle when there are many small cycles (which the rasteriser handles
+ * slowly); then the triangle changed by the last step.
+ */
+View.prototype.drawInterior = function (style) {
+  const { ctx, sx, sy } = this;
+  const { loops, starts } = this.currentBoundary();
+  ctx.fillStyle = style.color;
+  ctx.beginPath();
+  if (starts.length <= 2000) {
+    for (let c = 0; c + 1 < starts.length; c++) {
+      let [px, py] = [NaN, NaN];
+      for (let k = starts[c]; k < starts[c + 1]; k++) {
+        const v = loops[k];
+        if (Math.round(sx[v]) === px && Math.round(sy[v]) === py) continue; // in the same pixel
+        [px, py] = [Math.round(sx[v]), Math.round(sy[v])];
+        if (k === starts[c]) ctx.moveTo(sx[v], sy[v]);
+        else ctx.lineTo(sx[v], sy[v]);
+      }
+      ctx.closePath();
+    }
+  } else {
+    const { tri, labels } = this.model.trace;
+    for (let t = 0, size = 0; t < labels.length; t++) {
+      if (!labels[t]) continue;
+      const [a, b, c] = [tri[3 * t], tri[3 * t + 1], tri[3 * t + 2]];
+      ctx.moveTo(sx[a], sy[a]);
+      ctx.lineTo(sx[b], sy[b]);
+      ctx.lineTo(sx[c], sy[c]);
+      ctx.closePath();
+      if (++size === 64) {
+        ctx.fill();
+        ctx.beginPath();
+        size = 0;
+      }
+    }
+  }
+  ctx.fill("nonzero");
+  const trace = this.model.trace;
+  if (this.step > 0 && this.step <= trace.steps) {
+    const k = this.step - 1;
+    const t = trace.stepTriangle[k];
+    const [a, b, c] = [trace.tri[3 * t], trace.tri[3 * t + 1], trace.tri[3 * t + 2]];
+    ctx.beginPath();
+    ctx.moveTo(sx[a], sy[a]);
+    ctx.lineTo(sx[b], sy[b]);
+    ctx.lineTo(sx[c], sy[c]);
+    ctx.closePath();
+    ctx.fillStyle = STEP_COLORS[trace.stepKind[k]] || STEP_COLORS.i;
+    ctx.fill();
+    ctx.lineWidth = 1.5;
+    ctx.strokeStyle = "#1b1f27";
+    ctx.stroke();
+    const size = Math.max(sx[a], sx[b], sx[c]) - Math.min(sx[a], sx[b], sx[c]) + Math.max(sy[a], sy[b], sy[c]) - Math.min(sy[a], sy[b], sy[c]);
+    if (size < 8) {
+      // Too small to see: ring it.
+      ctx.beginPath();
+      ctx.arc((sx[a] + sx[b] + sx[c]) / 3, (sy[a] + sy[b] + sy[c]) / 3, 9, 0, 2 * Math.PI);
+      ctx.strokeStyle = ctx.fillStyle;
+      ctx.lineWidth = 2.5;
+      ctx.stroke();
+    }
+  }
+};
+
+/** The boundary at the current step, computed once per step. */
+View.prototype.currentBoundary = function () {
+  if (!this.stepEdges) {
+    const boundary = this.model.trace.boundary();
+    this.stepEdges = Object.assign(boundary, cycles(boundary.edges, boundary.sides, this.model.n));
+  }
+  return this.stepEdges;
+};
+
+/** Moves the replay to step s. */
+View.prototype.setStep = function (s) {
+  const trace = this.model.trace;
+  if (!trace) return;
+  this.step = clamp(s | 0, 0, trace.steps);
+  trace.seek(this.step);
+  this.stepEdges = null; // recomputed by the next frame, however often the slider moves
+  this.request();
+};

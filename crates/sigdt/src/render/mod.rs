@@ -1,0 +1,15 @@
+//! Pictures of point sets, proximity graphs and reconstructions, as standalone SVG.
+//!
+//! - `svg`: [`render_svg`] draws the chosen [`Layers`] with [`RenderOptions`].
+//! - `frame`: the page layout, and line widths and dot sizes from the point spacing.
+//! - `path`: compact path data (one `<path>` per layer) and edge chaining.
+//! - `legend`: the legend and text escaping.
+
+mod frame;
+mod legend;
+mod path;
+mod svg;
+#[cfg(test)]
+mod tests;
+
+pub use svg::{render_svg, Layers, RenderOptions};
