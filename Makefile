@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test lint rust-test doc bench bench-python report clean py-build py-test py-lint
+.PHONY: browser all build demo test lint rust-test doc bench bench-python report pictures clean py-build py-test py-lint
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -29,12 +29,15 @@ demo: build
 	@echo "== sigdt reconstruct data/inputs/$(DEMO).xy"
 	@$(SIGDT) reconstruct data/inputs/$(DEMO).xy -o out/$(DEMO).edges --verbose
 	@$(SIGDT) reconstruct data/inputs/$(DEMO).xy -o out/$(DEMO).loops
-	@$(SIGDT) reconstruct data/inputs/$(DEMO).xy -o out/$(DEMO).svg
-	@$(SIGDT) reconstruct data/inputs/glyph_sigma.xy -o out/glyph_sigma.svg
+	@$(SIGDT) render data/inputs/$(DEMO).xy --gt data/inputs/$(DEMO).gt -o out/$(DEMO).svg
+	@$(SIGDT) render data/inputs/$(DEMO).xy --gt data/inputs/$(DEMO).gt -o out/$(DEMO).png
+	@$(SIGDT) view data/inputs/glyph_e_reversed.xy --gt data/inputs/glyph_e_reversed.gt \
+	  -o out/glyph_e_reversed.html
 	@if cmp -s out/$(DEMO).edges data/inputs/$(DEMO).gt; then \
 	  echo "ground truth: exact ($$(wc -l < out/$(DEMO).edges) edges equal data/inputs/$(DEMO).gt)"; \
 	else echo "ground truth: NOT exact"; exit 1; fi
-	@echo "wrote out/$(DEMO).edges, out/$(DEMO).loops, out/$(DEMO).svg, out/glyph_sigma.svg"
+	@echo "wrote out/$(DEMO).edges, out/$(DEMO).loops, out/$(DEMO).svg (the README picture), out/$(DEMO).png,"
+	@echo "      out/glyph_e_reversed.html (open it in a browser: the steps of inflating and sculpting)"
 
 ## test: formatting, lints, every Rust test (unit, property, golden, CLI), docs, and the
 ## Python package's tests (binding contract, properties, docs, Dask, CLI parity).
@@ -101,6 +104,15 @@ report: build py-build
 	for k in noise outliers lfs-noise eps; do \
 	  for f in sweep.csv rmse.svg exact.svg; do cp $(SWEEPS)/$$k/$$f $(REPORT)/sweeps/$$k-$$f; done; \
 	done
+
+## pictures: the README picture (what `make demo` draws) and the steps of docs/steps.md.
+pictures: build py-build
+	$(SIGDT) render data/inputs/$(DEMO).xy --gt data/inputs/$(DEMO).gt -o docs/images/demo.svg
+	$(SIGDT) render data/inputs/glyph_e_reversed.xy --gt data/inputs/glyph_e_reversed.gt \
+	  --layers points,sigdt,result -o docs/images/steps-sigdt.svg
+	$(SIGDT) render data/inputs/glyph_e_reversed.xy --layers points,boundary \
+	  -o docs/images/steps-inflated.svg
+	$(VPY) python/bench/steps_figure.py data/inputs/glyph_e_reversed.xy docs/images/steps.png
 
 clean:
 	rm -rf out $(VENV)

@@ -2,7 +2,7 @@
 mirroring the extension module exactly (names, parameters, defaults).
 
 README's Python section and the docstring examples themselves run as doctests
-(``--doctest-modules --doctest-glob=README.md`` in pyproject.toml).
+(``--doctest-modules --doctest-glob=*.md`` and ``testpaths`` in pyproject.toml).
 """
 
 from __future__ import annotations
@@ -101,7 +101,12 @@ def test_readme_python_section_is_a_collected_doctest(repo_root):
     readme = (repo_root / "README.md").read_text()
     assert re.search(r"^>>> import .*sigdt", readme, re.MULTILINE)
     config = (repo_root / "pyproject.toml").read_text()
-    assert "--doctest-glob=README.md" in config and "--doctest-modules" in config
+    # Collected: README.md and the docs with Python examples are test paths, and the glob
+    # makes their ``>>>`` blocks doctests.
+    assert "--doctest-glob=*.md" in config and "--doctest-modules" in config
+    testpaths = re.search(r"^testpaths = \[(.*)\]", config, re.MULTILINE).group(1)
+    for doc in ["README.md", "docs/steps.md", "docs/python.md"]:
+        assert f'"{doc}"' in testpaths, f"{doc} is not collected"
 
 
 # --- the stub ------------------------------------------------------------------------------------

@@ -18,6 +18,7 @@ use tempfile::TempDir;
 mod bench;
 mod errors;
 mod files;
+mod pictures;
 mod results;
 
 /// What one run of the binary did.

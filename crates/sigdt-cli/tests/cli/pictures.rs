@@ -1,0 +1,65 @@
+//! `sigdt render` and `sigdt view`: files written, layers present, errors clear. The viewer
+//! itself is driven in a real browser by `python/tests/test_viewer.py`.
+
+use super::*;
+
+fn bundled(name: &str) -> String {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/inputs").join(name);
+    path.to_str().unwrap().to_string()
+}
+
+#[test]
+fn render_writes_svg_and_png_with_the_layers_asked_for() {
+    let dir = tempdir();
+    let (xy, gt) = (bundled("glyph_e_reversed.xy"), bundled("glyph_e_reversed.gt"));
+    let args =
+        ["render", &xy, "--gt", &gt, "--layers", "points,dt,sig,sigdt,sigdt2,boundary,result,gt"];
+    sigdt_in(dir.path(), &[&args[..], &["-o", "all.svg"]].concat(), None).ok();
+    let svg = fs::read_to_string(dir.path().join("all.svg")).unwrap();
+    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"), "{}", &svg[..80]);
+    for label in ["SIGDT", "missing 0", "extra 0"] {
+        assert!(svg.contains(label), "legend lacks {label:?}");
+    }
+    sigdt_in(dir.path(), &["render", &xy, "-o", "pic.png"], None).ok();
+    let png = fs::read(dir.path().join("pic.png")).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+}
+
+#[test]
+fn render_and_view_errors_are_clear() {
+    let dir = tempdir();
+    let xy = bundled("glyph_sigma.xy");
+    sigdt_in(dir.path(), &["render", &xy, "-o", "x.jpg"], None).error(&[".svg or .png"]);
+    sigdt_in(dir.path(), &["render", &xy, "--layers", "gt", "-o", "x.svg"], None)
+        .error(&["needs --gt"]);
+    sigdt_in(
+        dir.path(),
+        &["render", &xy, "--layers", "boundary", "--method", "crust", "-o", "x.svg"],
+        None,
+    )
+    .error(&["no inflating"]);
+    fs::write(dir.path().join("bad.gt"), "0 1\n1 9999\n").unwrap();
+    sigdt_in(dir.path(), &["view", &xy, "--gt", "bad.gt", "-o", "v.html"], None)
+        .error(&["bad.gt", "9999"]);
+    sigdt_in(dir.path(), &["view", &xy, "-o", "v.txt"], None).error(&[".html"]);
+    sigdt_in(dir.path(), &["render", &xy, "--layers", "nope", "-o", "x.svg"], None).usage_error();
+    assert!(!dir.path().join("x.svg").exists() && !dir.path().join("v.html").exists());
+}
+
+#[test]
+fn view_embeds_the_data_and_nothing_external() {
+    let dir = tempdir();
+    let xy = bundled("glyph_e_reversed.xy");
+    sigdt_in(dir.path(), &["view", &xy, "-o", "v.html"], None).ok();
+    let html = fs::read_to_string(dir.path().join("v.html")).unwrap();
+    assert!(html.contains("glyph_e_reversed (70 points)") && html.contains("\"steps\""));
+    for external in ["<script src", "http://", "https://"] {
+        assert!(!html.contains(external), "the page refers to {external}");
+    }
+    // A method without inflating or sculpting: no trace, still a page.
+    sigdt_in(dir.path(), &["view", &xy, "--method", "peel", "-o", "p.html"], None).ok();
+    assert!(
+        fs::read_to_string(dir.path().join("p.html")).unwrap().contains("\"trace\": null")
+            || fs::read_to_string(dir.path().join("p.html")).unwrap().contains("\"trace\":null")
+    );
+}
