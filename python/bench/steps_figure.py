@@ -13,7 +13,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import sigdt  # noqa: E402
+import sigdt
 
 
 def main(argv: list[str]) -> int:
