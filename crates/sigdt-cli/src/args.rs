@@ -73,7 +73,15 @@ pub struct Cli {
     /// What to do.
     #[command(subcommand)]
     pub command: Command,
+    /// Refuse input with more than N points: reading stops at the first line over the
+    /// limit, so a huge file or stream is never read whole.
+    #[arg(long, global = true, value_name = "N", default_value_t = DEFAULT_MAX_POINTS,
+          value_parser = RangedU64ValueParser::<usize>::new().range(1..))]
+    pub max_points: usize,
 }
+
+/// Default of `--max-points`: 10^8 points (1.6 GB of coordinates).
+pub const DEFAULT_MAX_POINTS: usize = 100_000_000;
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]

@@ -2,6 +2,7 @@
 
 use std::io::{self, Write};
 use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 use anyhow::Result;
@@ -13,6 +14,7 @@ use crate::output::{is_dash, Output};
 
 /// Runs the command in `cli`.
 pub fn run(cli: Cli) -> Result<()> {
+    MAX_POINTS.store(cli.max_points, Ordering::Relaxed);
     match cli.command {
         Command::Reconstruct(args) => reconstruct(&args),
         Command::Graph(args) => graph(&args),
@@ -70,12 +72,16 @@ fn graph(args: &GraphArgs) -> Result<()> {
     output.write(|w| sigdt::io::write_edges(w, &edges))
 }
 
-/// The points of `input`, a file or `-` for standard input.
+/// `--max-points` of this run: the one setting every command's input reading shares.
+static MAX_POINTS: AtomicUsize = AtomicUsize::new(crate::args::DEFAULT_MAX_POINTS);
+
+/// The points of `input`, a file or `-` for standard input (at most `--max-points`).
 pub fn read_input(input: &Path) -> Result<Vec<Point>> {
+    let max = MAX_POINTS.load(Ordering::Relaxed);
     if is_dash(input) {
-        Ok(sigdt::io::parse_points(io::stdin().lock(), "<stdin>", None)?)
+        Ok(sigdt::io::parse_points_at_most(io::stdin().lock(), "<stdin>", None, max)?)
     } else {
-        Ok(sigdt::io::read_points(input)?)
+        Ok(sigdt::io::read_points_at_most(input, max)?)
     }
 }
 

@@ -18,6 +18,7 @@ use tempfile::TempDir;
 mod bench;
 mod errors;
 mod files;
+mod limits;
 mod pictures;
 mod results;
 

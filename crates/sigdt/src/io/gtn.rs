@@ -7,11 +7,14 @@ use super::lines::{coordinate, Lines};
 use crate::{Point, Result};
 
 /// Gtn points: the header `N 2 0 0`, then `N` lines `index x y`.
-pub(super) fn gtn<R: BufRead>(lines: &mut Lines<R>) -> Result<Vec<Point>> {
+pub(super) fn gtn<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result<Vec<Point>> {
     let Some(header) = lines.next_content()? else {
         return Err(lines.error("missing .gtn header 'N 2 0 0'".to_string()));
     };
     let n = gtn_header(header).map_err(|message| lines.error(message))?;
+    if n > max_points {
+        return Err(lines.error(super::points::too_many(max_points)));
+    }
     // The header is untrusted: reserve at most 1M points up front.
     let mut points = Vec::with_capacity(n.min(1 << 20));
     while let Some(line) = lines.next_content()? {

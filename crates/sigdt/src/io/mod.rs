@@ -13,5 +13,8 @@ mod lines;
 pub mod points;
 pub mod write;
 
-pub use points::{parse_edges, parse_points, read_edges, read_points, PointFormat, MAX_LINE};
+pub use points::{
+    parse_edges, parse_points, parse_points_at_most, read_edges, read_points, read_points_at_most,
+    PointFormat, MAX_LINE,
+};
 pub use write::{write_edges, write_reconstruction, OutputFormat};

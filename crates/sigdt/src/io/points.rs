@@ -48,9 +48,16 @@ impl PointFormat {
 /// Reads the points of the file at `path`, in the format given by its extension
 /// ([`PointFormat::from_path`]) or else detected from its content.
 pub fn read_points(path: &Path) -> Result<Vec<Point>> {
+    read_points_at_most(path, usize::MAX)
+}
+
+/// [`read_points`], refusing files with more than `max_points` points (see
+/// [`parse_points_at_most`]).
+pub fn read_points_at_most(path: &Path, max_points: usize) -> Result<Vec<Point>> {
     let name = path.display().to_string();
     let file = File::open(path).map_err(|source| Error::Io { path: name.clone(), source })?;
-    parse_points(BufReader::with_capacity(1 << 16, file), &name, PointFormat::from_path(path))
+    let reader = BufReader::with_capacity(1 << 16, file);
+    parse_points_at_most(reader, &name, PointFormat::from_path(path), max_points)
 }
 
 /// Parses points from `reader` in `format`, or, with `None`, in the format detected from the
@@ -69,6 +76,18 @@ pub fn parse_points<R: BufRead>(
     name: &str,
     format: Option<PointFormat>,
 ) -> Result<Vec<Point>> {
+    parse_points_at_most(reader, name, format, usize::MAX)
+}
+
+/// [`parse_points`], stopping with an error naming the line as soon as the input has more
+/// than `max_points` points (for `.gtn`, as soon as the header announces more), so that a
+/// huge input is refused after reading at most `max_points` lines of it.
+pub fn parse_points_at_most<R: BufRead>(
+    reader: R,
+    name: &str,
+    format: Option<PointFormat>,
+    max_points: usize,
+) -> Result<Vec<Point>> {
     let mut lines = Lines::new(reader, name);
     let format = match format {
         Some(format) => format,
@@ -79,13 +98,18 @@ pub fn parse_points<R: BufRead>(
     };
     lines.unread();
     match format {
-        PointFormat::Plain => plain(&mut lines),
-        PointFormat::Gtn => gtn(&mut lines),
+        PointFormat::Plain => plain(&mut lines, max_points),
+        PointFormat::Gtn => gtn(&mut lines, max_points),
     }
 }
 
+/// The message for input with more than `max` points.
+pub(super) fn too_many(max: usize) -> String {
+    format!("more than the {max} points allowed (raise the limit with --max-points)")
+}
+
 /// Plain points: two numbers a line; the first line with content may be a header.
-fn plain<R: BufRead>(lines: &mut Lines<R>) -> Result<Vec<Point>> {
+fn plain<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result<Vec<Point>> {
     let mut points = Vec::new();
     let mut first = true;
     while let Some(line) = lines.next_content()? {
@@ -96,6 +120,9 @@ fn plain<R: BufRead>(lines: &mut Lines<R>) -> Result<Vec<Point>> {
         };
         first = false;
         points.extend(point.map_err(|message| lines.error(message))?);
+        if points.len() > max_points {
+            return Err(lines.error(too_many(max_points)));
+        }
     }
     Ok(points)
 }
@@ -117,6 +144,17 @@ mod tests {
 
     fn parse(text: &str, format: Option<PointFormat>) -> Result<Vec<Point>> {
         parse_points(text.as_bytes(), "t.xy", format)
+    }
+
+    #[test]
+    fn point_limit_names_the_first_line_over_it() {
+        let text = "x y\n0 0\n1 0\n\n2 0\n3 0\n";
+        assert_eq!(parse_points_at_most(text.as_bytes(), "t.xy", None, 4).unwrap().len(), 4);
+        let err = parse_points_at_most(text.as_bytes(), "t.xy", None, 2).unwrap_err();
+        assert_eq!(err.to_string(), format!("t.xy:5: {}", too_many(2)));
+        let gtn = "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n";
+        let err = parse_points_at_most(gtn.as_bytes(), "t.gtn", None, 2).unwrap_err();
+        assert_eq!(err.to_string(), format!("t.gtn:1: {}", too_many(2)));
     }
 
     #[test]
