@@ -156,18 +156,4 @@ fn two_separate_loops_stay_separate() {
     assert_eq!(rec.loops[1], (10..18).collect::<Vec<_>>());
 }
 
-#[test]
-fn degenerate_inputs_have_documented_results() {
-    let rec = run(&[]);
-    assert_eq!((rec.status.clone(), rec.edges.len()), (Status::TooFewPoints, 0));
-    let rec = run(&[[1.0, 1.0], [1.0, 1.0], [2.0, 0.0]]);
-    assert_eq!((rec.status.clone(), rec.edges.clone()), (Status::TooFewPoints, vec![[0, 2]]));
-    assert_eq!(rec.duplicates, vec![[1, 0]]);
-    let rec = run(&[[2.0, 2.0], [0.0, 0.0], [3.0, 3.0], [1.0, 1.0]]);
-    assert_eq!(rec.status, Status::Collinear);
-    assert_eq!(rec.paths, vec![vec![1, 3, 0, 2]]);
-    // A duplicate of a polygon vertex gets no edges; the polygon is unchanged.
-    let rec = run(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]]);
-    assert_eq!(rec.edges, vec![[0, 1], [0, 3], [1, 2], [2, 3]]);
-    assert_eq!((rec.status, rec.duplicates), (Status::Polygon, vec![[4, 1]]));
-}
+// Degenerate input (empty, duplicates, collinear, ...) for every method: tests/degenerate.rs.

@@ -16,6 +16,7 @@ use std::process::{Command, Stdio};
 use tempfile::TempDir;
 
 mod bench;
+mod determinism;
 mod errors;
 mod files;
 mod limits;

@@ -1,0 +1,102 @@
+//! Determinism: the same input gives the same result, bit for bit, on every run and
+//! whichever thread computes it. Inputs include exact ties (a grid, exactly cocircular
+//! points, duplicates), where the answer depends only on tie-breaking by index.
+use sigdt::curves::{random_closed_curve, spiral_band, Rng};
+use sigdt::{reconstruct, Method, Options, Point, Reconstruction};
+
+/// Smaller inputs in debug builds, to keep `cargo test` quick.
+fn scale(release: usize, debug: usize) -> usize {
+    if cfg!(debug_assertions) {
+        debug
+    } else {
+        release
+    }
+}
+
+/// The inputs: smooth curves, a band, and inputs full of exact ties.
+fn inputs() -> Vec<(String, Vec<Point>)> {
+    let mut sets = Vec::new();
+    for seed in 0..3 {
+        sets.push((
+            format!("curve {seed}"),
+            random_closed_curve(seed, scale(3000, 400)).shuffled(seed).points,
+        ));
+    }
+    sets.push(("spiral band".into(), spiral_band(scale(3000, 400)).shuffled(9).points));
+    let k = scale(40, 12);
+    let mut grid: Vec<Point> = (0..k * k).map(|i| [(i % k) as f64, (i / k) as f64]).collect();
+    Rng::new(1).shuffle(&mut grid);
+    sets.push(("grid".into(), grid));
+    // Exactly cocircular: the 8 symmetric copies of the integer points on x² + y² = 65².
+    let mut cocircular: Vec<Point> = [[16.0, 63.0], [33.0, 56.0], [39.0, 52.0], [25.0, 60.0]]
+        .iter()
+        .flat_map(|&[x, y]| {
+            [[x, y], [y, x], [-x, y], [-y, x], [x, -y], [y, -x], [-x, -y], [-y, -x]]
+        })
+        .chain([[65.0, 0.0], [0.0, 65.0], [-65.0, 0.0], [0.0, -65.0]])
+        .collect();
+    Rng::new(2).shuffle(&mut cocircular);
+    sets.push(("cocircular".into(), cocircular));
+    let mut duplicated = random_closed_curve(5, scale(1000, 200)).points;
+    duplicated.extend_from_within(..duplicated.len() / 2);
+    Rng::new(3).shuffle(&mut duplicated);
+    sets.push(("duplicates".into(), duplicated));
+    sets
+}
+
+/// Every (input, method) pair.
+fn jobs() -> Vec<(String, Vec<Point>, Method)> {
+    inputs()
+        .into_iter()
+        .flat_map(|(name, points)| {
+            Method::ALL.iter().map(move |&m| (name.clone(), points.clone(), m))
+        })
+        .collect()
+}
+
+/// The full result as bytes: every field, including the statistics.
+fn bytes(points: &[Point], method: Method) -> Vec<u8> {
+    let rec: Reconstruction = reconstruct(points, &Options { method, ..Options::default() })
+        .unwrap_or_else(|e| panic!("{method}: {e}"));
+    format!("{rec:?}").into_bytes()
+}
+
+#[test]
+fn repeated_runs_are_byte_identical() {
+    for (name, points, method) in jobs() {
+        let first = bytes(&points, method);
+        for _ in 0..2 {
+            assert!(bytes(&points, method) == first, "{name}, {method}: a rerun differs");
+        }
+    }
+}
+
+#[test]
+fn results_do_not_depend_on_the_thread_count() {
+    let jobs = jobs();
+    let one: Vec<Vec<u8>> = jobs.iter().map(|(_, p, m)| bytes(p, *m)).collect();
+    let threads = 4;
+    let mut four: Vec<Vec<u8>> = vec![Vec::new(); jobs.len()];
+    std::thread::scope(|s| {
+        // Thread t takes jobs t, t + 4, ...: neighbouring jobs run concurrently.
+        let handles: Vec<_> = (0..threads)
+            .map(|t| {
+                let jobs = &jobs;
+                s.spawn(move || {
+                    (t..jobs.len())
+                        .step_by(threads)
+                        .map(|k| (k, bytes(&jobs[k].1, jobs[k].2)))
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        for h in handles {
+            for (k, b) in h.join().expect("a worker panicked") {
+                four[k] = b;
+            }
+        }
+    });
+    for (k, (name, _, method)) in jobs.iter().enumerate() {
+        assert!(one[k] == four[k], "{name}, {method}: 1 and 4 threads differ");
+    }
+}
