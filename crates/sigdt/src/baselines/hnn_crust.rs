@@ -10,9 +10,11 @@
 //!    point of the list qualifies;
 //! 4. the edge `{p, x}` for `x ∈ {nn1(p), nn2(p)}` iff also `p ∈ {nn1(x), nn2(x)}`.
 //!
-//! Both comparisons in step 3 are decided exactly (squared distances expanded into sums of
-//! coordinate products, `sign_of_sum_of_products`); the ordering of step 1 uses `f64`
-//! squared distances.
+//! Every distance comparison is decided exactly (squared distances expanded into sums of
+//! coordinate products, `sign_of_sum_of_products`): both in step 3 and in the ordering of
+//! step 1, whose `f64` squared distances only pick the candidates from the 2-d tree. (An
+//! `f64` ordering breaks near-ties by index instead of by distance; with far-apart clusters
+//! that chose a farther point as `nn2` and made two HNN edges cross.)
 //!
 //! # Guarantee
 //! If the points are an ε-sample of a smooth closed curve with ε < 0.47 (ρ < 0.9), the
@@ -82,6 +84,11 @@ pub fn hnn_crust(dt: &Triangulation) -> Vec<[u32; 2]> {
 
 /// Whether `|x a| > |x b|`, exactly.
 fn farther(x: Point, a: Point, b: Point) -> bool {
+    compare_distances(x, a, b) == Ordering::Greater
+}
+
+/// `|x a|` compared with `|x b|`, exactly.
+fn compare_distances(x: Point, a: Point, b: Point) -> Ordering {
     // |x - a|² - |x - b|² = a·a - b·b - 2x·a + 2x·b, coordinate by coordinate.
     let [ax, ay] = a;
     let [bx, by] = b;
@@ -95,7 +102,7 @@ fn farther(x: Point, a: Point, b: Point) -> bool {
         (-by, by),
         (-y2, ay),
         (y2, by),
-    ]) == Ordering::Greater
+    ])
 }
 
 /// The `k` points nearest to `p` other than itself, nearest first, ties by input index.
@@ -103,17 +110,22 @@ fn nearest(dt: &Triangulation, tree: &KdTree, points: &[Point], p: u32, k: usize
     if k == 0 {
         return Vec::new();
     }
+    let x = points[p as usize];
     let mut extra = 4;
     loop {
-        // The tree breaks distance ties by vertex number; asking for more than `k` and
-        // re-sorting is exact once the list reaches past the k-th distance (or holds every
-        // other point).
+        // The tree orders by `f64` squared distance, ties by vertex number. Asking for more
+        // than `k` and re-sorting exactly (ties by input index) is exact once the list holds
+        // every other point, or once the `f64` distances of the first `k` stay below the
+        // farthest one retrieved by more than their rounding error (a few ulps).
         let want = k + extra;
-        let mut near = tree.nearest(points[p as usize], want, p);
+        let mut near = tree.nearest(x, want, p);
         near.sort_by(|a, b| {
-            a.0.total_cmp(&b.0).then(dt.input_index(a.1).cmp(&dt.input_index(b.1)))
+            let (pa, pb) = (points[a.1 as usize], points[b.1 as usize]);
+            compare_distances(x, pa, pb).then(dt.input_index(a.1).cmp(&dt.input_index(b.1)))
         });
-        if near.len() < want || near.len() <= k || near[k - 1].0 < near[near.len() - 1].0 {
+        let kth = near.iter().take(k).map(|a| a.0).fold(0.0, f64::max);
+        let last = near.iter().map(|a| a.0).fold(0.0, f64::max);
+        if near.len() < want || near.len() <= k || kth * (1.0 + 16.0 * f64::EPSILON) < last {
             return near.into_iter().take(k).map(|(_, v)| v).collect();
         }
         extra *= 2;

@@ -29,16 +29,23 @@ impl SegmentGrid {
         let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
         let m = segments.len().max(1) as f64;
         let total: f64 = segments.iter().map(|s| dist(s[0], s[1])).sum();
-        let mut cell = (2.0 * total / m).max((w * h / (4.0 * m)).sqrt()).max(w.max(h) / 4096.0);
-        if !(cell.is_finite() && cell > 0.0) {
+        // sqrt(w h / 4m) with the square roots first, so it cannot overflow for finite
+        // extents (coordinates beyond ~1e154 made `w * h` infinite, the cell fell back to 1
+        // and the cell count overflowed). The cell is at least max(w, h) / 4096, so there are
+        // at most 4097 cells a side; it is infinite only when the extents or the total length
+        // overflow, and then one cell holds everything.
+        let area = w.sqrt() * h.sqrt() / (2.0 * m.sqrt());
+        let mut cell = (2.0 * total / m).max(area).max(w.max(h) / 4096.0);
+        if cell.is_nan() || cell <= 0.0 {
             cell = 1.0;
         }
-        let size = [(w / cell) as i64 + 1, (h / cell) as i64 + 1];
+        let count = |extent: f64| (extent / cell).min(4096.0) as i64 + 1;
+        let size = [count(w), count(h)];
         let mut grid =
             SegmentGrid { segments, origin: lo, cell, size, start: Vec::new(), items: Vec::new() };
         let mut pairs: Vec<(u32, u32)> = Vec::new();
         for (s, &[p, q]) in grid.segments.iter().enumerate() {
-            let pieces = (dist(p, q) / cell).ceil().max(1.0) as usize;
+            let pieces = (dist(p, q) / cell).ceil().clamp(1.0, 8192.0) as usize;
             for k in 0..pieces {
                 let (a, b) = (
                     lerp(p, q, k as f64 / pieces as f64),

@@ -57,11 +57,14 @@ pub fn inflate(bd: &mut Boundary<'_>, g: &EdgeMask, stats: &mut Stats) {
             continue;
         }
         let touched = accept(bd, c.t, stats);
-        for v in touched {
+        for &v in &touched {
             bd.reclassify(v);
         }
-        for h in 3 * c.t..3 * c.t + 3 {
-            push_around(bd, &mut queue, bd.dt.origin(h));
+        // Every triangle whose cost or candidacy changed has a touched vertex: it shares an
+        // edge with `t` or with a filled pocket triangle, or has a reclassified vertex. Its
+        // queued entry is stale now and is skipped when popped, so push it again.
+        for &v in &touched {
+            push_around(bd, &mut queue, v);
         }
     }
     debug_assert_eq!(bd.non_manifold, 0, "inflating left non-manifold vertices");

@@ -1,0 +1,83 @@
+//! Inputs found by the fuzz targets in `fuzz/` (docs/fuzzing.md), each fed through the same
+//! code path as its target: no panic, and every reconstruction passes the invariant checker.
+use sigdt::eval::{evaluate, graph_epsilon, overlap};
+use sigdt::testing::check_reconstruction;
+use sigdt::{reconstruct, Edge, Method, Options, Point};
+
+/// What the `reconstruct` fuzz target does with one point set.
+fn reconstruct_all(points: &[Point]) {
+    for &method in Method::ALL {
+        for leaf_elimination in [true, false] {
+            let options = Options { method, leaf_elimination };
+            let rec = reconstruct(points, &options).unwrap();
+            if let Err(why) = check_reconstruction(points, &rec) {
+                panic!("{method} (leaf elimination {leaf_elimination}): {why}\n{rec:?}");
+            }
+        }
+    }
+}
+
+/// What the `eval` fuzz target does: every metric, errors allowed, no panic.
+fn evaluate_all(points: &[Point], result: &[Edge], gt: &[Edge]) {
+    let _ = evaluate(points, result, gt);
+    let _ = graph_epsilon(points, gt);
+    let _ = overlap(points, gt);
+}
+
+/// Inflating left a non-manifold vertex (debug assertion in `inflate`): near-collinear
+/// points from one-ulp rounding. Fuzz input `reconstruct/inflate_non_manifold`.
+#[test]
+fn inflate_near_collinear_spike() {
+    reconstruct_all(&[
+        [0.0, 0.0],
+        [0.0, 5.0],
+        [2.0, 12.0],
+        [12.0, 12.0],
+        [7.0, 3.0],
+        [2.0, 11.999999999999998],
+        [1.0, 5.999999999999999],
+        [-7.0, -24.0],
+        [5.0, 2.0],
+    ]);
+}
+
+/// HNN-CRUST returned two crossing edges: three points one ulp apart at 1e17 and three
+/// near the origin. Ordering neighbours by `f64` squared distance could not tell the near
+/// points apart and broke the tie by index, choosing a farther `nn2`. Fuzz input
+/// `reconstruct/crash_hnn_crust_crossing`, minimised from 34 points.
+#[test]
+fn hnn_crust_far_cluster_near_ties() {
+    reconstruct_all(&[
+        [4.5, 4.0],
+        [1e17, 1e17],
+        [1e17, 9.999999999999997e16],
+        [9.999999999999997e16, 1e17],
+        [11.0, 4.0],
+        [5.47213595499958, 11.60845213036123],
+    ]);
+}
+
+/// The segment grid of the distance metrics overflowed its cell count: with coordinates
+/// near 1e301, `w * h` was infinite, the cell size fell back to 1 and `w / 1 + 1` overflowed
+/// `i64`. Fuzz input `eval/crash_grid_cell_overflow`; the first set is its minimised form.
+#[test]
+fn distance_grid_huge_coordinates() {
+    evaluate_all(&[[1e300, -1.8000000000000002e301], [0.0, 0.0]], &[[0, 0]], &[[0, 1], [1, 0]]);
+    let points = [[0.0, 0.0], [-7e300, -2.4e301], [1e300, 0.0]];
+    evaluate_all(&points, &[[0, 0]], &[[0, 1], [2, 0]]);
+    evaluate(&points, &[[0, 1]], &[[0, 1], [0, 2]]).unwrap();
+    // Extents that overflow f64 themselves: no panic, no endless loop.
+    let points = [[-1.7e308, -1.7e308], [1.7e308, 1.7e308], [1.7e308, -1.7e308]];
+    evaluate_all(&points, &[[0, 1]], &[[0, 1], [1, 2]]);
+}
+
+/// Not fixed yet (docs/fuzzing.md): `evaluate` takes minutes. A result edge 1e15 long
+/// against a ground truth 52 across is sampled every 52/2000 (capped at 2^24 samples per
+/// edge), and each sample far outside the ground truth's segment grid walks O(side²) cells.
+/// Fuzz input `eval/timeout-d9e581de43ff62f8ba700dd6d03f8a38567ced2c`, shortened.
+#[test]
+#[ignore = "takes minutes until distance sampling is bounded (docs/fuzzing.md)"]
+fn distance_sampling_far_outside_the_ground_truth() {
+    let points = [[0.0, 0.0], [3.184081677783118e-15, 52.0], [1e15, 1e15]];
+    evaluate_all(&points, &[[0, 2]], &[[0, 0], [1, 1]]);
+}
