@@ -25,7 +25,8 @@ fn evaluate_all(points: &[Point], result: &[Edge], gt: &[Edge]) {
 }
 
 /// Inflating left a non-manifold vertex (debug assertion in `inflate`): near-collinear
-/// points from one-ulp rounding. Fuzz input `reconstruct/inflate_non_manifold`.
+/// points from one-ulp rounding. Fuzz input `reconstruct/crash_inflate_pocket_stale` in
+/// `fuzz/seeds/` (minimised).
 #[test]
 fn inflate_near_collinear_spike() {
     reconstruct_all(&[
