@@ -123,8 +123,9 @@ fn layout(entries: &[Entry], width: f64) -> Vec<(usize, f64)> {
     out
 }
 
-/// `text` with the five XML special characters escaped and control characters dropped.
-pub(crate) fn escape(text: &str) -> String {
+/// `text` with the five XML special characters escaped and control characters dropped
+/// (tabs and newlines become spaces), for SVG text and attributes.
+pub fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         match c {

@@ -12,4 +12,5 @@ mod svg;
 #[cfg(test)]
 mod tests;
 
+pub use legend::escape as escape_xml;
 pub use svg::{render_svg, Layers, RenderOptions};

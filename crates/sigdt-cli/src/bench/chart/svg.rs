@@ -258,22 +258,7 @@ pub(super) fn num(v: f64) -> String {
     format!("{:.1}", if v.is_finite() { v } else { 0.0 })
 }
 
-/// `s` with the five XML special characters escaped.
-pub(super) fn escape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&apos;"),
-            c if c.is_control() && c != '\n' && c != '\t' => out.push(' '),
-            c => out.push(c),
-        }
-    }
-    out
-}
+pub(super) use sigdt::render::escape_xml as escape;
 
 /// Asserts a chart is well formed and has no NaN or infinite coordinate (test helper).
 #[cfg(test)]
