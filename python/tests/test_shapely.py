@@ -109,3 +109,40 @@ def test_round_trip_of_a_smooth_non_convex_shape():
     assert result.is_valid
     assert result.symmetric_difference(polygon).area == pytest.approx(0.0, abs=1e-9)
     assert result.normalize().equals_exact(polygon.normalize(), tolerance=0.0)
+
+
+def _rings_in_rings() -> np.ndarray:
+    """Three nested circles (radii 3, 2, 1) and a separate one."""
+    return np.r_[
+        blob(150, center=(0.0, 0.0)) * 3.0,
+        blob(100, center=(0.0, 0.0)) * 2.0,
+        blob(50),
+        blob(60, center=(8.0, 0.0)),
+    ]
+
+
+def test_sig_auto_nested_loops_are_polygons_with_holes():
+    rec = sigdt.reconstruct(_rings_in_rings(), method="sig-auto")
+    assert rec.status == "polygons" and len(rec.loops) == 4
+    geometry = rec.to_shapely()
+    assert geometry.geom_type == "MultiPolygon" and geometry.is_valid
+    # The ring between radii 3 and 2, the disk of radius 1 inside it, the separate disk.
+    parts = sorted(geometry.geoms, key=lambda g: -g.area)
+    assert [len(g.interiors) for g in parts] == [1, 0, 0]
+    assert parts[0].area == pytest.approx(np.pi * (9 - 4), rel=0.01)
+    feature = rec.to_geojson()
+    assert feature["geometry"]["type"] == "MultiPolygon"
+    assert shapely.geometry.shape(feature["geometry"]).equals(geometry)
+
+
+def test_sig_auto_open_curve_is_a_linestring_and_mixed_is_a_collection():
+    t = np.linspace(0.0, 1.5 * np.pi, 60)
+    arc = np.c_[np.cos(t), np.sin(t)]
+    rec = sigdt.reconstruct(arc, method="sig-auto")
+    assert rec.status == "curves" and not rec.loops
+    assert [p.tolist() for p in rec.paths] == [list(range(60))]
+    assert rec.to_shapely().geom_type == "LineString"
+    both = sigdt.reconstruct(np.r_[arc, blob(40, center=(5.0, 0.0))], method="sig-auto")
+    geometry = both.to_shapely()
+    assert geometry.geom_type == "GeometryCollection"
+    assert sorted(g.geom_type for g in geometry.geoms) == ["LineString", "Polygon"]

@@ -35,7 +35,7 @@ Result status (printed with --verbose; also in geojson's properties):
   polygons         several disjoint closed simple polygons through every distinct point
   sculpting-stuck  sculpting found no candidate while points were still inside: the loops
                    are simple but miss those points (a warning goes to stderr)
-  curves           (graph-filter methods) loops and open paths, not all points on loops
+  curves           (sig-auto, graph filters) loops and open paths, not all points on loops
   network          (graph-filter methods) some point has 3 or more edges (a junction)
   collinear        all points on one line: the open path through them in line order
   too-few-points   fewer than 3 distinct points: 2 give their edge, 0 or 1 give nothing

@@ -162,7 +162,7 @@ fn geometry(
         (true, true) => {
             out.extend_from_slice(if json { b"null" } else { b"GEOMETRYCOLLECTION EMPTY" })
         }
-        (false, true) => shape(out, points, loops, true, json)?,
+        (false, true) => polygons(out, points, loops, json)?,
         (true, false) => shape(out, points, paths, false, json)?,
         (false, false) => {
             out.extend_from_slice(if json {
@@ -170,10 +170,138 @@ fn geometry(
             } else {
                 b"GEOMETRYCOLLECTION ("
             });
-            shape(out, points, loops, true, json)?;
+            polygons(out, points, loops, json)?;
             out.extend_from_slice(b", ");
             shape(out, points, paths, false, json)?;
             out.extend_from_slice(if json { b"]}" } else { b")" });
+        }
+    }
+    Ok(())
+}
+
+/// The loops as polygons with holes ([`nest_loops`]): a `POLYGON` / `Polygon` when there is
+/// one shell, else a multi-polygon. Holes run clockwise, shells counter-clockwise.
+fn polygons(
+    out: &mut Vec<u8>,
+    points: &[Point],
+    loops: &[Vec<usize>],
+    json: bool,
+) -> io::Result<()> {
+    let nested = nest_loops(points, loops);
+    if nested.len() == 1 && nested[0].len() == 1 {
+        return shape(out, points, loops, true, json);
+    }
+    let rings = |polygon: &Vec<usize>| -> Vec<Vec<usize>> {
+        polygon
+            .iter()
+            .enumerate()
+            .map(|(k, &l)| {
+                let mut ring = loops[l].clone();
+                if k > 0 {
+                    ring.reverse();
+                }
+                ring
+            })
+            .collect()
+    };
+    let (open, close) = if json { ("[", "]") } else { ("(", ")") };
+    let multi = nested.len() > 1;
+    match (json, multi) {
+        (true, true) => out.extend_from_slice(br#"{"type": "MultiPolygon", "coordinates": ["#),
+        (true, false) => out.extend_from_slice(br#"{"type": "Polygon", "coordinates": "#),
+        (false, true) => out.extend_from_slice(b"MULTIPOLYGON ("),
+        (false, false) => out.extend_from_slice(b"POLYGON "),
+    }
+    for (k, polygon) in nested.iter().enumerate() {
+        write!(out, "{}{open}", if k == 0 { "" } else { ", " })?;
+        for (r, ring) in rings(polygon).iter().enumerate() {
+            write!(out, "{}{open}", if r == 0 { "" } else { ", " })?;
+            coordinates(out, points, ring.iter().chain(ring.first()), json)?;
+            out.extend_from_slice(close.as_bytes());
+        }
+        out.extend_from_slice(close.as_bytes());
+    }
+    if multi {
+        out.extend_from_slice(close.as_bytes());
+    }
+    if json {
+        out.push(b'}');
+    }
+    Ok(())
+}
+
+/// Groups vertex-disjoint, non-crossing loops into polygons with holes: each group is a
+/// shell's loop number followed by its holes'. A loop inside an even number of others is a
+/// shell; the loops directly inside it (one level deeper) are its holes. Shells are in loop
+/// order, holes in loop order.
+pub fn nest_loops(points: &[Point], loops: &[Vec<usize>]) -> Vec<Vec<usize>> {
+    let boxes: Vec<[f64; 4]> = loops
+        .iter()
+        .map(|l| {
+            l.iter().fold(
+                [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY],
+                |b, &i| {
+                    let [x, y] = points[i];
+                    [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)]
+                },
+            )
+        })
+        .collect();
+    // Loop `i` is inside loop `j` when a vertex of `i` that is not on `j` is (the first
+    // vertex, for the vertex-disjoint loops of a reconstruction).
+    let inside = |i: usize, j: usize| {
+        let b = boxes[j];
+        let in_box = |[x, y]: Point| x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3];
+        if i == j || !in_box(points[loops[i][0]]) {
+            return false;
+        }
+        let Some(&v) = loops[i].iter().find(|v| !loops[j].contains(v)) else {
+            return false;
+        };
+        point_in_ring(points, &loops[j], points[v])
+    };
+    let containers: Vec<Vec<usize>> =
+        (0..loops.len()).map(|i| (0..loops.len()).filter(|&j| inside(i, j)).collect()).collect();
+    let depth: Vec<usize> = containers.iter().map(Vec::len).collect();
+    (0..loops.len())
+        .filter(|&i| depth[i] % 2 == 0)
+        .map(|shell| {
+            let holes = (0..loops.len())
+                .filter(|&h| depth[h] == depth[shell] + 1 && containers[h].contains(&shell));
+            std::iter::once(shell).chain(holes).collect()
+        })
+        .collect()
+}
+
+/// Whether `p` lies inside the closed ring through `ring` (even-odd rule).
+fn point_in_ring(points: &[Point], ring: &[usize], p: Point) -> bool {
+    let mut inside = false;
+    for k in 0..ring.len() {
+        let (a, b) = (points[ring[k]], points[ring[(k + 1) % ring.len()]]);
+        if (a[1] > p[1]) != (b[1] > p[1]) {
+            let x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+            if p[0] < x {
+                inside = !inside;
+            }
+        }
+    }
+    inside
+}
+
+/// The coordinates of `indices`, comma-separated: `x y` in WKT, `[x, y]` in JSON (`null`
+/// for non-finite coordinates).
+fn coordinates<'a>(
+    out: &mut Vec<u8>,
+    points: &[Point],
+    indices: impl Iterator<Item = &'a usize>,
+    json: bool,
+) -> io::Result<()> {
+    for (k, &i) in indices.enumerate() {
+        let ([x, y], sep) = (points[i], if k == 0 { "" } else { ", " });
+        match json {
+            false => write!(out, "{sep}{x:?} {y:?}")?,
+            true if x.is_finite() && y.is_finite() => write!(out, "{sep}[{x:?}, {y:?}]")?,
+            true => write!(out, "{sep}[null, null]")?,
         }
     }
     Ok(())
@@ -206,14 +334,7 @@ fn shape(
     for (k, indices) in lists.iter().enumerate() {
         write!(out, "{}{open_ring}{open}", if k == 0 { "" } else { ", " })?;
         let closing = indices.first().filter(|_| ring);
-        for (k, &i) in indices.iter().chain(closing).enumerate() {
-            let ([x, y], sep) = (points[i], if k == 0 { "" } else { ", " });
-            match json {
-                false => write!(out, "{sep}{x:?} {y:?}")?,
-                true if x.is_finite() && y.is_finite() => write!(out, "{sep}[{x:?}, {y:?}]")?,
-                true => write!(out, "{sep}[null, null]")?,
-            }
-        }
+        coordinates(out, points, indices.iter().chain(closing), json)?;
         write!(out, "{close}{close_ring}")?;
     }
     write!(out, "{}{}", if multi { close } else { "" }, if json { "}" } else { "" })
@@ -264,6 +385,25 @@ mod tests {
         assert_eq!(format("a.txt"), Some(OutputFormat::Edges));
         assert_eq!(format("a.loops"), Some(OutputFormat::Loops));
         assert_eq!(format("a.png"), None);
+    }
+
+    #[test]
+    fn nested_loops_are_polygons_with_holes() {
+        // Squares of sides 6, 4 and 2 around the origin, and one apart.
+        let square = |r: f64, dx: f64| [[dx - r, -r], [dx + r, -r], [dx + r, r], [dx - r, r]];
+        let points: Vec<Point> =
+            [square(3.0, 0.0), square(2.0, 0.0), square(1.0, 0.0), square(1.0, 9.0)].concat();
+        let loops: Vec<Vec<usize>> = (0..4).map(|k| (4 * k..4 * k + 4).collect()).collect();
+        assert_eq!(nest_loops(&points, &loops), vec![vec![0, 1], vec![2], vec![3]]);
+        let rec = Reconstruction { loops, status: Status::Polygons, ..Reconstruction::default() };
+        let wkt = text(OutputFormat::Wkt, &points, &rec);
+        assert!(wkt.starts_with("MULTIPOLYGON (((-3.0 -3.0, 3.0 -3.0, 3.0 3.0, -3.0 3.0, -3.0 -3.0), (-2.0 2.0, 2.0 2.0, 2.0 -2.0, -2.0 -2.0, -2.0 2.0)), ((-1.0"), "{wkt}");
+        let json = text(OutputFormat::GeoJson, &points, &rec);
+        assert!(
+            json.contains(r#"{"type": "MultiPolygon", "coordinates": [[[[-3.0, -3.0], "#),
+            "{json}"
+        );
+        assert!(json.contains("[-3.0, -3.0]], [[-2.0, 2.0], [2.0, 2.0]"), "{json}");
     }
 
     #[test]

@@ -12,15 +12,20 @@ use crate::Edge;
 
 /// The EMST of a proper triangulation as an edge mask.
 pub fn emst_mask(dt: &Triangulation) -> EdgeMask {
-    let key = |h: u32| {
-        let (a, b) = (dt.input_index(dt.origin(h)), dt.input_index(dt.dest(h)));
-        (dt.length(h), a.min(b), a.max(b))
-    };
+    minimum_spanning_forest(dt, |_| true)
+}
+
+/// The minimum spanning forest of the Delaunay edges for which `keep(h)` holds (`h` is the
+/// representative half-edge of [`Triangulation::edge_halfedges`]): one minimum spanning
+/// tree per connected component of that subgraph. Ties are broken by the edges' input
+/// indices, so the forest does not depend on the vertex numbering.
+pub fn minimum_spanning_forest(dt: &Triangulation, keep: impl Fn(u32) -> bool) -> EdgeMask {
     let mut edges: Vec<(f64, usize, usize, u32)> = dt
         .edge_halfedges()
+        .filter(|&h| keep(h))
         .map(|h| {
-            let (len, a, b) = key(h);
-            (len, a, b, h)
+            let (a, b) = (dt.input_index(dt.origin(h)), dt.input_index(dt.dest(h)));
+            (dt.length(h), a.min(b), a.max(b), h)
         })
         .collect();
     edges.sort_unstable_by(|x, y| x.0.total_cmp(&y.0).then((x.1, x.2).cmp(&(y.1, y.2))));

@@ -11,6 +11,11 @@ pub enum Method {
     /// SIG-CONNECT2D [MOW22](https://doi.org/10.1111/cgf.14654): SIGDT, then CONNECT2D's inflating and sculpting.
     #[default]
     SigConnect2d,
+    /// SIG-AUTO (ours, after [MOW22](https://doi.org/10.1111/cgf.14654)'s future work):
+    /// SIGDT2 per component; components whose spanning tree is a path are joined and closed
+    /// only where the gap is at most twice their longest edge, the rest is inflated and
+    /// sculpted on its own. Returns closed loops and open paths. Ignores `leaf_elimination`.
+    SigAuto,
     /// CONNECT2D [OM13](https://doi.org/10.1111/cgf.12227): the same inflating and sculpting
     /// started from BC₀ (EMST plus leaf edges). Ignores `leaf_elimination`.
     Connect2d,
@@ -28,30 +33,36 @@ pub enum Method {
     /// PEEL (Parakkat, Methirumangalath, Muthuganapathy 2018): drop every triangle's longest
     /// edge, then filter.
     Peel,
+    /// The Euclidean minimum spanning tree: the trivial baseline for open curves.
+    Emst,
 }
 
 impl Method {
     /// Every method, in the order they are listed in help texts.
     pub const ALL: &'static [Method] = &[
         Method::SigConnect2d,
+        Method::SigAuto,
         Method::Connect2d,
         Method::Crust,
         Method::NnCrust,
         Method::HnnCrust,
         Method::Crawl,
         Method::Peel,
+        Method::Emst,
     ];
 
     /// The kebab-case name.
     pub fn name(self) -> &'static str {
         match self {
             Method::SigConnect2d => "sig-connect2d",
+            Method::SigAuto => "sig-auto",
             Method::Connect2d => "connect2d",
             Method::Crust => "crust",
             Method::NnCrust => "nn-crust",
             Method::HnnCrust => "hnn-crust",
             Method::Crawl => "crawl",
             Method::Peel => "peel",
+            Method::Emst => "emst",
         }
     }
 }

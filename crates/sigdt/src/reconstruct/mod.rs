@@ -1,6 +1,8 @@
 //! Curve reconstruction: SIG-CONNECT2D and the machinery it shares with CONNECT2D.
 
 pub mod boundary;
+pub mod chain_join;
+pub mod closed_component;
 pub mod degenerate;
 pub mod extract;
 pub mod from_edges;
@@ -11,7 +13,9 @@ pub mod pocket;
 pub mod queue;
 pub mod result;
 pub mod sculpt;
+pub mod sig_auto;
 pub mod sig_connect2d;
+pub mod spur_path;
 pub mod trace;
 
 pub use method::{Method, Options};
@@ -46,12 +50,20 @@ pub fn reconstruct(points: &[Point], options: &Options) -> Result<Reconstruction
 pub fn reconstruct_on(dt: &Triangulation, options: &Options) -> Reconstruction {
     let filter: fn(&Triangulation) -> Vec<[u32; 2]> = match options.method {
         Method::SigConnect2d => return sig_connect2d_on(dt, options.leaf_elimination),
+        Method::SigAuto => return sig_auto::sig_auto_on(dt),
         Method::Connect2d => return connect2d_on(dt),
         Method::Crust => crust,
         Method::NnCrust => nn_crust,
         Method::HnnCrust => hnn_crust,
         Method::Crawl => crawl,
         Method::Peel => peel,
+        Method::Emst => |dt: &Triangulation| {
+            let tree = crate::proximity::emst::emst_mask(dt);
+            dt.edge_halfedges()
+                .filter(|&h| tree.contains(h))
+                .map(|h| [dt.origin(h), dt.dest(h)])
+                .collect()
+        },
     };
     // The graph filters: the same degenerate results, then their edges read as chains.
     degenerate::degenerate_result(dt)

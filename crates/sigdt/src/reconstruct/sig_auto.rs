@@ -1,0 +1,332 @@
+//! SIG-AUTO: SIG-CONNECT2D per component, with open curves kept open.
+//!
+//! SIG-CONNECT2D ([MOW22]) returns closed manifold polygons only; the paper names open and
+//! multiple curves as future work. SIG-AUTO starts from the same graph, SIGDT2 (SIGDT with
+//! leaf elimination), and decides per connected component:
+//!
+//! 1. **Chains.** If the component's minimum spanning tree (over its SIGDT2 edges) is a
+//!    path, the component is a *chain*: a piece of curve, open or closed. Chains are then
+//!    joined end to end, and closed into loops, along Delaunay edges no longer than twice
+//!    the longest edge of the chains they join ([`chain_join`](super::chain_join), after
+//!    the non-uniformity condition `u < 2` of [MOW22] Theorem 1). What stays open is
+//!    returned as open paths.
+//! 2. **Everything else** (the spanning tree branches: extra SIGDT edges at sharp corners,
+//!    noise, dense clusters) is inflated and sculpted like SIG-CONNECT2D, but on the
+//!    component's own triangulation ([`closed_component`](super::closed_component)), so
+//!    curves nested in one another stay separate loops.
+//!
+//! # Guarantees
+//! - The output is always a set of vertex-disjoint simple loops and simple open paths made
+//!   of Delaunay edges; no two edges cross.
+//! - A closed curve sampled with ρ < 1 and u < 2 ([MOW22] Theorem 1): SIGDT contains its
+//!   polygon; when that polygon is the component's spanning path plus one edge, the closing
+//!   edge satisfies the join bound and the curve comes back closed.
+//! - An open curve whose two end samples are more than twice the longest sample spacing
+//!   apart is never closed; when its SIGDT2 component's spanning tree is the sample path
+//!   (dense sampling), it comes back as that path.
+//! - Separate curves whose SIGDT2 components are separate (each curve sampled more densely
+//!   than the gap between them) are reconstructed independently, nested or not.
+//! - When the fallback applies (a loop of a component's own triangulation that is not a
+//!   Delaunay edge of all points, which could cross another component), the result is
+//!   SIG-CONNECT2D's.
+//!
+//! # Complexity
+//! O(n log n) time, O(n) memory.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+use super::chain_join::{Chains, JOIN_RATIO};
+use super::closed_component::closed_component;
+use super::degenerate::degenerate_result;
+use super::from_edges::from_vertex_pairs;
+use super::result::{Reconstruction, Stats, Status};
+use super::sig_connect2d::{initial_graph, sig_connect2d_on};
+use super::spur_path::path_with_spurs;
+use crate::delaunay::Triangulation;
+use crate::geometry::distance;
+use crate::graph::UnionFind;
+use crate::proximity::emst::minimum_spanning_forest;
+use crate::proximity::sigdt::sigdt_mask;
+use crate::proximity::sigdt::TIE_SLACK;
+
+/// Reconstructs `dt`'s points with SIG-AUTO (see the module docs).
+pub fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
+    if let Some(result) = degenerate_result(dt) {
+        return result;
+    }
+    let (graph, leaf_edges_added) = initial_graph(dt, true);
+    let forest = minimum_spanning_forest(dt, |h| graph.contains(h));
+    // The same forest without the leaf edges: the sample spacing of every SIGDT piece.
+    let sigdt = Tree::new(dt, {
+        let sigdt = sigdt_mask(dt);
+        let forest = minimum_spanning_forest(dt, |h| sigdt.contains(h));
+        move |h| forest.contains(h)
+    });
+    let n = dt.num_vertices();
+    let tree = Tree::new(dt, |h| forest.contains(h));
+    let mut components = UnionFind::new(n);
+    for h in dt.edge_halfedges().filter(|&h| forest.contains(h)) {
+        components.union(dt.origin(h), dt.dest(h));
+    }
+    // Vertices grouped by component, in vertex order.
+    let root: Vec<u32> = (0..n as u32).map(|v| components.find(v)).collect();
+    let mut branched = vec![false; n];
+    for v in 0..n {
+        if tree.degree(v as u32) > 2 {
+            branched[root[v] as usize] = true;
+        }
+    }
+    let mut members: Vec<Vec<u32>> = vec![Vec::new(); n];
+    for v in 0..n as u32 {
+        members[root[v as usize] as usize].push(v);
+    }
+
+    let mut stats = Stats { graph_edges: graph.len(), leaf_edges_added, ..Stats::default() };
+    let mut pairs: Vec<[u32; 2]> = Vec::new();
+    let mut left_out: Vec<usize> = Vec::new();
+    let mut chains = Chains::new(dt);
+    for (r, vertices) in members.iter().enumerate().filter(|(_, m)| !m.is_empty()) {
+        if !branched[r] {
+            let path = tree.walk(vertices);
+            pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
+            chains.add(&path);
+            continue;
+        }
+        let Some(closed) = closed_component(dt, &graph, vertices) else {
+            return sig_connect2d_on(dt, true);
+        };
+        let bound = JOIN_RATIO * sigdt.longest_edge(dt, vertices) * (1.0 + TIE_SLACK);
+        let within = |&[a, b]: &[u32; 2]| distance(dt.point(a), dt.point(b)) <= bound;
+        if !closed.edges.iter().all(within) {
+            if let Some(paths) = sigdt_pieces_as_paths(dt, &sigdt, vertices) {
+                for path in paths {
+                    pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
+                    chains.add(&path);
+                }
+                continue;
+            }
+        }
+        pairs.extend(closed.edges);
+        left_out.extend(closed.left_out.iter().map(|&v| dt.input_index(v)));
+        add_counts(&mut stats, &closed.stats);
+    }
+    pairs.extend(chains.join());
+    let mut rec = from_vertex_pairs(dt, pairs, stats);
+    if !left_out.is_empty() {
+        left_out.sort_unstable();
+        rec.status = Status::SculptingStuck { left_out };
+    }
+    rec
+}
+
+/// The pieces of `vertices` in the forest `tree`, each as a path (walked, or with its spurs
+/// put in), or `None` if some piece is not a path with spurs.
+fn sigdt_pieces_as_paths(
+    dt: &Triangulation,
+    tree: &Tree,
+    vertices: &[u32],
+) -> Option<Vec<Vec<u32>>> {
+    let mut seen: std::collections::HashSet<u32> = Default::default();
+    let mut paths = Vec::new();
+    for &v in vertices {
+        if !seen.insert(v) {
+            continue;
+        }
+        let mut piece = vec![v];
+        let mut k = 0;
+        while k < piece.len() {
+            for &w in tree.neighbours(piece[k]) {
+                if seen.insert(w) {
+                    piece.push(w);
+                }
+            }
+            k += 1;
+        }
+        if piece.iter().all(|&x| tree.degree(x) <= 2) {
+            paths.push(tree.walk(&piece));
+        } else {
+            paths.push(path_with_spurs(dt, &piece, |x| tree.neighbours(x).to_vec())?);
+        }
+    }
+    Some(paths)
+}
+
+/// A forest over the triangulation's vertices as compressed adjacency lists.
+struct Tree {
+    start: Vec<usize>,
+    entries: Vec<u32>,
+}
+
+impl Tree {
+    /// The forest of the Delaunay edges for which `contains(h)` holds.
+    fn new(dt: &Triangulation, contains: impl Fn(u32) -> bool) -> Tree {
+        let n = dt.num_vertices();
+        let edges: Vec<[u32; 2]> = dt
+            .edge_halfedges()
+            .filter(|&h| contains(h))
+            .map(|h| [dt.origin(h), dt.dest(h)])
+            .collect();
+        let mut start = vec![0; n + 1];
+        for &[a, b] in &edges {
+            start[a as usize + 1] += 1;
+            start[b as usize + 1] += 1;
+        }
+        for v in 0..n {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut entries = vec![0; 2 * edges.len()];
+        for &[a, b] in &edges {
+            for (x, y) in [(a, b), (b, a)] {
+                entries[fill[x as usize]] = y;
+                fill[x as usize] += 1;
+            }
+        }
+        Tree { start, entries }
+    }
+
+    fn neighbours(&self, v: u32) -> &[u32] {
+        &self.entries[self.start[v as usize]..self.start[v as usize + 1]]
+    }
+
+    /// The longest tree edge at any of `vertices`.
+    fn longest_edge(&self, dt: &Triangulation, vertices: &[u32]) -> f64 {
+        vertices
+            .iter()
+            .flat_map(|&v| self.neighbours(v).iter().map(move |&w| (v, w)))
+            .map(|(v, w)| distance(dt.point(v), dt.point(w)))
+            .fold(0.0, f64::max)
+    }
+
+    fn degree(&self, v: u32) -> usize {
+        self.neighbours(v).len()
+    }
+
+    /// The vertices of a path-shaped component in order from one end.
+    fn walk(&self, vertices: &[u32]) -> Vec<u32> {
+        let start = vertices.iter().copied().find(|&v| self.degree(v) <= 1).unwrap_or(vertices[0]);
+        let mut path = vec![start];
+        let (mut previous, mut current) = (u32::MAX, start);
+        while let Some(&step) = self.neighbours(current).iter().find(|&&w| w != previous) {
+            if path.len() == vertices.len() {
+                break;
+            }
+            path.push(step);
+            previous = current;
+            current = step;
+        }
+        path
+    }
+}
+
+/// Adds the inflating and sculpting counts of one component to `total`.
+fn add_counts(total: &mut Stats, part: &Stats) {
+    total.non_manifold_before += part.non_manifold_before;
+    total.inflated_triangles += part.inflated_triangles;
+    total.pockets += part.pockets;
+    total.interior_before_sculpting += part.interior_before_sculpting;
+    total.sculpted_triangles += part.sculpted_triangles;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::check_reconstruction;
+    use crate::Point;
+    use std::f64::consts::TAU;
+
+    fn arc(n: usize, radius: f64, centre: Point, from: f64, to: f64) -> Vec<Point> {
+        (0..n)
+            .map(|i| {
+                let a = from + (to - from) * i as f64 / (n - 1) as f64;
+                [centre[0] + radius * a.cos(), centre[1] + radius * a.sin()]
+            })
+            .collect()
+    }
+
+    fn circle(n: usize, radius: f64, centre: Point) -> Vec<Point> {
+        (0..n)
+            .map(|i| {
+                let a = TAU * i as f64 / n as f64;
+                [centre[0] + radius * a.cos(), centre[1] + radius * a.sin()]
+            })
+            .collect()
+    }
+
+    fn run(points: &[Point]) -> Reconstruction {
+        let rec = sig_auto_on(&Triangulation::new(points).unwrap());
+        check_reconstruction(points, &rec).unwrap();
+        rec
+    }
+
+    #[test]
+    fn a_circle_is_one_polygon() {
+        let rec = run(&circle(60, 1.0, [0.0, 0.0]));
+        assert_eq!(rec.status, Status::Polygon);
+        assert_eq!(rec.loops, vec![(0..60).collect::<Vec<_>>()]);
+    }
+
+    #[test]
+    fn an_open_arc_is_one_path_in_order() {
+        // Three quarters of a circle: SIG-CONNECT2D must close it, SIG-AUTO keeps it open.
+        let points = arc(40, 1.0, [0.0, 0.0], 0.0, 0.75 * TAU);
+        let rec = run(&points);
+        assert_eq!(rec.status, Status::Curves);
+        assert!(rec.loops.is_empty());
+        assert_eq!(rec.paths, vec![(0..40).collect::<Vec<_>>()]);
+        let dt = Triangulation::new(&points).unwrap();
+        assert!(sig_connect2d_on(&dt, true).status.is_manifold());
+    }
+
+    #[test]
+    fn a_gap_closes_only_within_twice_the_spacing() {
+        // 30 samples at spacing s on a circle of 32 (gap 3s, not closed) or 31 slots (gap 2s).
+        for (slots, closed) in [(31, true), (32, false), (34, false)] {
+            let points: Vec<Point> = circle(slots, 1.0, [0.0, 0.0]).into_iter().take(30).collect();
+            let rec = run(&points);
+            assert_eq!(rec.loops.len() == 1, closed, "{slots} slots: {:?}", rec.status);
+            assert_eq!(rec.paths.len() == 1, !closed, "{slots} slots");
+        }
+    }
+
+    #[test]
+    fn nested_circles_are_two_loops() {
+        // SIG-CONNECT2D swallows the inner circle into the outer disk's interior.
+        let mut points = circle(80, 2.0, [0.0, 0.0]);
+        points.extend(circle(40, 1.0, [0.1, 0.0]));
+        let rec = run(&points);
+        assert_eq!(rec.status, Status::Polygons);
+        assert_eq!(rec.loops.len(), 2);
+        assert_eq!(rec.loops[1], (80..120).collect::<Vec<_>>());
+        let dt = Triangulation::new(&points).unwrap();
+        assert_ne!(sig_connect2d_on(&dt, true).loops.len(), 2);
+    }
+
+    #[test]
+    fn loops_and_paths_together() {
+        let mut points = circle(50, 1.0, [0.0, 0.0]);
+        points.extend(arc(20, 1.0, [5.0, 0.0], 0.0, 2.0));
+        points.extend(arc(15, 1.0, [0.0, 5.0], 1.0, 3.0));
+        let rec = run(&points);
+        assert_eq!(rec.status, Status::Curves);
+        assert_eq!(rec.loops, vec![(0..50).collect::<Vec<_>>()]);
+        assert_eq!(rec.paths, vec![(50..70).collect::<Vec<_>>(), (70..85).collect::<Vec<_>>()]);
+    }
+
+    #[test]
+    fn a_spur_is_put_into_the_path() {
+        // A sample 0.6 off a line of unit spacing hangs off the spanning tree (its nearest
+        // point is 0.6 away, its other neighbours 1.17): the tree branches, and the result is
+        // still one path through every point, with the spur next to its anchor.
+        let mut points: Vec<Point> = (0..21).map(|i| [i as f64, 0.0]).collect();
+        points.push([10.0, 0.6]);
+        let rec = run(&points);
+        let dt = Triangulation::new(&points).unwrap();
+        let forest = minimum_spanning_forest(&dt, |_| true);
+        assert!(forest.degrees(&dt).iter().any(|&d| d > 2), "the test needs a branching tree");
+        assert!(rec.loops.is_empty(), "{:?}", rec.status);
+        assert_eq!(rec.paths.len(), 1);
+        assert_eq!(rec.paths[0].len(), points.len());
+        let at = rec.paths[0].iter().position(|&v| v == 21).unwrap();
+        assert!([at - 1, at + 1].iter().any(|&k| rec.paths[0][k] == 10));
+    }
+}
