@@ -72,13 +72,24 @@ fn distance_grid_huge_coordinates() {
     evaluate_all(&points, &[[0, 1]], &[[0, 1], [1, 2]]);
 }
 
-/// Not fixed yet (docs/fuzzing.md): `evaluate` takes minutes. A result edge 1e15 long
-/// against a ground truth 52 across is sampled every 52/2000 (capped at 2^24 samples per
-/// edge), and each sample far outside the ground truth's segment grid walks O(side²) cells.
-/// Fuzz input `eval/timeout-d9e581de43ff62f8ba700dd6d03f8a38567ced2c`, shortened.
+/// `evaluate` took minutes (fuzzing finding 4). A result edge 1e15 long against a ground
+/// truth 52 across was sampled every 52/2000 (capped at 2^24 samples per edge), and each
+/// sample far outside the ground truth's segment grid walked O(side²) cells of a grid with
+/// up to 4097 cells a side. Fixed: the grid has at most 2√m + 1 cells a side, and an edge
+/// set gets at most 2^22 interior samples. Fuzz input
+/// `eval/timeout-d9e581de43ff62f8ba700dd6d03f8a38567ced2c`, shortened.
 #[test]
-#[ignore = "takes minutes until distance sampling is bounded (docs/fuzzing.md)"]
 fn distance_sampling_far_outside_the_ground_truth() {
     let points = [[0.0, 0.0], [3.184081677783118e-15, 52.0], [1e15, 1e15]];
     evaluate_all(&points, &[[0, 2]], &[[0, 0], [1, 1]]);
+}
+
+/// The other shape of finding 4: a ground truth of two zero-length edges at the ends of a
+/// 5-unit segment (a flat box: 4097 cells in a row) and a result along it; every sample
+/// walked thousands of empty cells.
+#[test]
+fn distance_grid_with_two_far_apart_points() {
+    let points: Vec<[f64; 2]> = (0..7).map(|i| [5.0 * i as f64 / 6.0, 0.0]).collect();
+    let path: Vec<[usize; 2]> = (0..6).map(|i| [i, i + 1]).collect();
+    evaluate_all(&points, &path, &[[0, 0], [6, 6]]);
 }

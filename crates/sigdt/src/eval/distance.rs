@@ -44,6 +44,10 @@ pub struct DistanceErrors {
 /// Samples per bounding-box diagonal (ALGORITHMS.md §4.5).
 pub const SAMPLES_PER_DIAGONAL: f64 = 2000.0;
 
+/// The most edge-interior samples taken of one edge set (about 4 million); see
+/// `for_each_sample`.
+pub const MAX_SAMPLES: usize = 1 << 22;
+
 /// The distance errors of `result` against `gt`, edges over `points`; `None` when either edge
 /// set is empty. Fails on non-finite points or edges out of range.
 pub fn distance_errors(
@@ -52,6 +56,8 @@ pub fn distance_errors(
     gt: &[Edge],
 ) -> Result<Option<DistanceErrors>> {
     check_all(points, result, gt)?;
+    let scaled = scaled_to_unit(points);
+    let points = &scaled[..];
     let (result, gt) = (normalise(result), normalise(gt));
     let (Some(gbox), Some(rbox)) = (edge_bbox(points, &gt), edge_bbox(points, &result)) else {
         return Ok(None);
@@ -91,9 +97,38 @@ pub fn distance_errors(
     }))
 }
 
+/// `points` multiplied by the power of two that brings the largest coordinate magnitude into
+/// [1, 2): exact (short of subnormal underflow), and the errors are ratios to the diagonal,
+/// so they do not change; squared lengths can no longer overflow (they did beyond about
+/// 1e154, giving infinite or NaN errors).
+fn scaled_to_unit(points: &[Point]) -> Vec<Point> {
+    let largest = points.iter().flatten().fold(0.0f64, |m, &c| m.max(c.abs()));
+    if largest == 0.0 || !largest.is_finite() {
+        return points.to_vec();
+    }
+    let exponent = largest.log2().floor() as i32;
+    // Two steps, so that neither factor overflows or underflows on its own.
+    let (a, b) = (powi2(-exponent / 2), powi2(-exponent - (-exponent / 2)));
+    points.iter().map(|&[x, y]| [x * a * b, y * a * b]).collect()
+}
+
+/// 2^k for |k| ≤ 1023.
+fn powi2(k: i32) -> f64 {
+    f64::from_bits(((1023 + k) as u64) << 52)
+}
+
 /// Calls `f` on every distinct vertex of `edges` and on the interior samples of every edge,
 /// spaced at most `h` apart.
+///
+/// The spacing grows beyond `h` when the edges are so long that `h` would give more than
+/// [`MAX_SAMPLES`] samples (a result edge far outside the ground truth's box): the errors
+/// stay exact at the vertices and within the coarser spacing elsewhere.
 fn for_each_sample(points: &[Point], edges: &[Edge], h: f64, mut f: impl FnMut(Point)) {
+    let total: f64 = edges
+        .iter()
+        .map(|&[i, j]| (points[i][0] - points[j][0]).hypot(points[i][1] - points[j][1]))
+        .sum();
+    let h = h.max(total / MAX_SAMPLES as f64);
     let mut vertices: Vec<usize> = edges.iter().flatten().copied().collect();
     vertices.sort_unstable();
     vertices.dedup();
@@ -142,6 +177,20 @@ mod tests {
         let e = distance_errors(&pts, &shifted, &SQUARE_EDGES).unwrap().unwrap();
         assert!((e.hausdorff - 0.01 / 2f64.sqrt()).abs() < 1e-12);
         assert!(e.rmse <= e.hausdorff && e.rmse > 0.5 * e.hausdorff);
+    }
+
+    #[test]
+    fn huge_and_tiny_coordinates_give_the_same_errors() {
+        let mut pts = SQUARE.to_vec();
+        pts.extend(SQUARE.iter().map(|p| [p[0], p[1] + 0.01]));
+        let shifted = [[4, 5], [5, 6], [6, 7], [4, 7]];
+        let unit = distance_errors(&pts, &shifted, &SQUARE_EDGES).unwrap().unwrap();
+        for scale in [2f64.powi(1000), 1e300, 1e-300, 2f64.powi(-1000)] {
+            let big: Vec<Point> = pts.iter().map(|p| [p[0] * scale, p[1] * scale]).collect();
+            let e = distance_errors(&big, &shifted, &SQUARE_EDGES).unwrap().unwrap();
+            assert!((e.rmse - unit.rmse).abs() < 1e-12 * unit.rmse, "{scale}: {e:?}");
+            assert!((e.hausdorff - unit.hausdorff).abs() < 1e-12 * unit.hausdorff, "{scale}");
+        }
     }
 
     #[test]

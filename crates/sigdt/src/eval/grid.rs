@@ -4,12 +4,13 @@
 //! bounding boxes touch, in a compressed (CSR) layout. A query visits square rings of cells
 //! around the query point, nearest ring first, and stops once the next ring cannot hold
 //! anything closer than the caller's current bound. The cell side is about twice the mean
-//! segment length, enlarged so the grid has at most about four cells per segment.
+//! segment length, enlarged so the grid has at most about four cells per segment (at most
+//! `2√m + 1` cells a side).
 //!
 //! # Complexity
 //! Build O(m log m + L / c) for `m` segments of total length `L` and cell side `c`. A query
 //! costs O(r² + k) for `r` rings and `k` listed segments visited: O(1) on curves sampled
-//! about evenly when the bound is a few segment lengths.
+//! about evenly when the bound is a few segment lengths, and O(m) at worst (every cell once).
 use crate::Point;
 
 /// Segments `[p, q]` (a point is the segment `[p, p]`) bucketed into a uniform grid.
@@ -31,11 +32,14 @@ impl SegmentGrid {
         let total: f64 = segments.iter().map(|s| dist(s[0], s[1])).sum();
         // sqrt(w h / 4m) with the square roots first, so it cannot overflow for finite
         // extents (coordinates beyond ~1e154 made `w * h` infinite, the cell fell back to 1
-        // and the cell count overflowed). The cell is at least max(w, h) / 4096, so there are
-        // at most 4097 cells a side; it is infinite only when the extents or the total length
-        // overflow, and then one cell holds everything.
+        // and the cell count overflowed). The cell is at least max(w, h) / (2 √m), so there
+        // are at most 2 √m + 1 cells a side and a query never walks more than O(m) cells
+        // (with a fixed lower bound of max(w, h) / 4096, a few segments far apart made
+        // every query walk millions of empty cells: fuzzing finding 4). The cell is infinite
+        // only when the extents or the total length overflow, and then one cell holds
+        // everything.
         let area = w.sqrt() * h.sqrt() / (2.0 * m.sqrt());
-        let mut cell = (2.0 * total / m).max(area).max(w.max(h) / 4096.0);
+        let mut cell = (2.0 * total / m).max(area).max(w.max(h) / (2.0 * m.sqrt()));
         if cell.is_nan() || cell <= 0.0 {
             cell = 1.0;
         }
