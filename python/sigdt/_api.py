@@ -55,7 +55,9 @@ def reconstruct(
         Anything numpy turns into an ``(n, 2)`` float64 array. A C-contiguous float64
         array is used without copying.
     method : str, default "sig-connect2d"
-        The reconstruction method (see ``sigdt.METHODS``).
+        The reconstruction method (see ``sigdt.METHODS``). ``"sig-auto"`` keeps open
+        curves open and nested curves separate: closed loops in ``loops``, open curves in
+        ``paths`` (docs/sig-auto.md).
     leaf_elimination : bool, default True
         Give every SIGDT leaf its shortest missing Delaunay edge before inflating.
 

@@ -38,9 +38,11 @@ class Reconstruction:
         Closed loops, each an int64 array of point indices in order (the closing edge is
         implied), counter-clockwise, starting at its smallest index; sorted.
     paths : list of numpy.ndarray
-        Open paths: for collinear input or two distinct points, and from the graph-filter
-        methods (``"crawl"``, ``"peel"``, ...) for open curves; with status ``"network"``
-        paths end at junctions (a path may start and end at the same junction).
+        Open paths, each an int64 array of point indices in order: for collinear input or
+        two distinct points, the open curves found by ``"sig-auto"``, and from the
+        graph-filter methods (``"crawl"``, ``"peel"``, ...) for open curves; with status
+        ``"network"`` paths end at junctions (a path may start and end at the same
+        junction).
     status : str
         ``"polygon"``, ``"polygons"``, ``"sculpting-stuck"``, ``"curves"`` (loops and open
         paths, not every point on a loop), ``"network"`` (some point has 3 or more edges),

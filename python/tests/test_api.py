@@ -387,6 +387,20 @@ def test_reconstruct_many_names_the_bad_set(varied_sets, bad):
         assert str(info.value).startswith("point set 57:"), str(info.value)
 
 
+@pytest.mark.parametrize("n_jobs", [None, 1, 2])
+def test_reconstruct_many_turns_a_panic_into_an_internal_error_naming_the_set(varied_sets, n_jobs):
+    # The extension's test hook makes set 31 panic inside its rayon worker; the panic is
+    # caught there, the other workers finish, and the error names the set.
+    arrays = [np.ascontiguousarray(p, dtype=np.float64) for p in varied_sets[:64]]
+    with pytest.raises(sigdt.InternalError) as info:
+        sigdt._core.reconstruct_many(arrays, "sig-connect2d", True, n_jobs, _panic_in_set=31)
+    message = str(info.value)
+    assert message.startswith("point set 31: internal error in sigdt"), message
+    assert "test hook" in message
+    # The module is still usable afterwards.
+    assert sigdt.reconstruct_many(varied_sets[:5]) == [sigdt.reconstruct(p) for p in varied_sets[:5]]
+
+
 @pytest.mark.parametrize("n_jobs", [0, -1, 1.5, "2"])
 def test_reconstruct_many_rejects_bad_n_jobs(n_jobs):
     with pytest.raises(ValueError, match="n_jobs"):
@@ -412,15 +426,18 @@ def test_version_matches_the_package_metadata(repo_root: Path):
 def test_methods_and_graph_kinds():
     assert sigdt.METHODS == [
         "sig-connect2d",
+        "sig-auto",
         "connect2d",
         "crust",
         "nn-crust",
         "hnn-crust",
         "crawl",
         "peel",
+        "emst",
     ]
     assert sigdt.GRAPH_KINDS == ["dt", "sig", "sigdt", "sigdt2", "emst", "knn"]
     for method in sigdt.METHODS:
         rec = sigdt.reconstruct(SQUARE, method=method)
-        # CRAWL closes no cycle shorter than 6 points; the square stays an open path.
-        assert rec.status == ("curves" if method == "crawl" else "polygon"), method
+        # CRAWL closes no cycle shorter than 6 points, and a spanning tree has no cycle:
+        # for both the square stays an open path.
+        assert rec.status == ("curves" if method in ("crawl", "emst") else "polygon"), method

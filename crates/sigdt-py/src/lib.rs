@@ -37,14 +37,19 @@ fn reconstruct<'py>(
 
 /// `reconstruct_many(point_sets, method, leaf_elimination, n_jobs) -> list[tuple]`, in
 /// parallel with the GIL released; an error names the failing set.
+///
+/// `_panic_in_set` is a test hook (not exposed by `sigdt.reconstruct_many`): the set with
+/// that index panics inside its worker instead of being reconstructed, so the tests can
+/// check that a Rust panic in one parallel task becomes an `InternalError` naming the set.
 #[pyfunction]
-#[pyo3(signature = (point_sets, method, leaf_elimination, n_jobs=None))]
+#[pyo3(signature = (point_sets, method, leaf_elimination, n_jobs=None, _panic_in_set=None))]
 fn reconstruct_many<'py>(
     py: Python<'py>,
     point_sets: Vec<PyReadonlyArray2<'py, f64>>,
     method: &str,
     leaf_elimination: bool,
     n_jobs: Option<usize>,
+    _panic_in_set: Option<usize>,
 ) -> PyResult<Bound<'py, PyList>> {
     let options = options(method, leaf_elimination)?;
     let sets = point_sets
@@ -56,7 +61,17 @@ fn reconstruct_many<'py>(
         })
         .collect::<PyResult<Vec<_>>>()?;
     let run = || -> Vec<Result<sigdt::Result<sigdt::Reconstruction>, String>> {
-        sets.par_iter().map(|pts| guarded(|| sigdt::reconstruct(pts, &options))).collect()
+        sets.par_iter()
+            .enumerate()
+            .map(|(k, pts)| {
+                guarded(|| {
+                    if _panic_in_set == Some(k) {
+                        panic!("test hook: panic in point set {k}");
+                    }
+                    sigdt::reconstruct(pts, &options)
+                })
+            })
+            .collect()
     };
     let results = py.detach(|| match n_jobs {
         None => Ok(run()),

@@ -9,7 +9,7 @@
 //! O(k log k) for a component of `k` points.
 use super::chain_join::JOIN_RATIO;
 use super::inflate_sculpt::inflate_and_sculpt;
-use super::result::{Stats, Status};
+use super::result::{Reconstruction, Stats, Status};
 use crate::delaunay::{Shape, Triangulation};
 use crate::graph::EdgeMask;
 use crate::proximity::sigdt::TIE_SLACK;
@@ -34,6 +34,12 @@ pub fn closed_component(
     graph: &EdgeMask,
     vertices: &[u32],
 ) -> Option<ClosedComponent> {
+    if vertices.len() == dt.num_vertices() {
+        // One component holding every point: its triangulation is `dt` itself.
+        let rec = inflate_and_sculpt(dt, graph, 0);
+        let vertex_of = vertex_numbers(dt);
+        return from_loops(dt, &rec, |i| vertex_of[i]);
+    }
     let points: Vec<_> = vertices.iter().map(|&v| dt.point(v)).collect();
     let sub = Triangulation::new(&points).ok()?;
     if sub.shape() != Shape::Proper {
@@ -58,10 +64,29 @@ pub fn closed_component(
         }
     }
     let rec = inflate_and_sculpt(&sub, &mask, 0);
+    from_loops(dt, &rec, |i| vertices[i])
+}
+
+/// Every input index's vertex of `dt` (duplicates map to their representative's).
+fn vertex_numbers(dt: &Triangulation) -> Vec<u32> {
+    let mut vertex_of = vec![u32::MAX; dt.input_len()];
+    for v in 0..dt.num_vertices() as u32 {
+        vertex_of[dt.input_index(v)] = v;
+    }
+    vertex_of
+}
+
+/// The loops of `rec` (indices mapped to vertices of `dt` by `vertex`), each cut open at
+/// [`opening_edge`]; `None` if a link is not an edge of `dt`.
+fn from_loops(
+    dt: &Triangulation,
+    rec: &Reconstruction,
+    vertex: impl Fn(usize) -> u32,
+) -> Option<ClosedComponent> {
     let mut edges = Vec::with_capacity(rec.edges.len());
     for cycle in &rec.loops {
         let k = cycle.len();
-        let link = |a: usize| [vertices[cycle[a]], vertices[cycle[(a + 1) % k]]];
+        let link = |a: usize| [vertex(cycle[a]), vertex(cycle[(a + 1) % k])];
         let length = |a: usize| {
             let [p, q] = link(a);
             crate::geometry::distance(dt.point(p), dt.point(q))
@@ -75,8 +100,8 @@ pub fn closed_component(
             edges.push([p, q]);
         }
     }
-    let left_out = match rec.status {
-        Status::SculptingStuck { left_out } => left_out.into_iter().map(|i| vertices[i]).collect(),
+    let left_out = match &rec.status {
+        Status::SculptingStuck { left_out } => left_out.iter().map(|&i| vertex(i)).collect(),
         _ => Vec::new(),
     };
     Some(ClosedComponent { edges, left_out, stats: rec.stats })
