@@ -53,6 +53,22 @@ fn is_connect(method: Method) -> bool {
     matches!(method, Method::SigConnect2d | Method::Connect2d)
 }
 
+/// The methods that inflate and sculpt, and SIG-AUTO: on the closed shapes below (one
+/// component, gaps within twice the spacing) SIG-AUTO gives the same result.
+fn is_connect_or_auto(method: Method) -> bool {
+    is_connect(method) || method == Method::SigAuto
+}
+
+/// SIG-AUTO's result where its join bound (gaps at most twice the longest SIGDT spacing)
+/// refuses to close: status `curves`, and every one of the `n` points on exactly one loop or
+/// path, with `paths` open paths.
+fn sig_auto_keeps_open(case: &str, rec: &Reconstruction, n: usize, paths: usize) {
+    assert_eq!(rec.status, Status::Curves, "{case}, sig-auto");
+    let on_chains: usize = rec.loops.iter().chain(&rec.paths).map(Vec::len).sum();
+    assert_eq!(on_chains, n, "{case}, sig-auto: a point is on no chain");
+    assert_eq!(rec.paths.len(), paths, "{case}, sig-auto");
+}
+
 /// Every method returns `expected` exactly (degenerate input has one shared result).
 fn all_give(case: &str, points: &[Point], expected: &Reconstruction) {
     for (method, rec) in run_all(case, points) {
@@ -109,7 +125,7 @@ fn closed(points: Vec<Point>, seed: u64) -> Sample {
 /// filters keep the invariants.
 fn connect_methods_are_exact(case: &str, s: &Sample) {
     for (method, rec) in run_all(case, &s.points) {
-        if is_connect(method) {
+        if is_connect_or_auto(method) {
             assert_eq!(rec.status, Status::Polygon, "{case}, {method}");
             assert!(rec.edges == s.edges, "{case}, {method}: not the ground-truth polygon");
         }
@@ -165,7 +181,7 @@ fn moved_from_configurations() {
     for (method, rec) in run_all("square + duplicate vertex", &points) {
         assert_eq!(rec.duplicates, vec![[4, 1]], "{method}");
         assert!(!rec.edges.iter().flatten().any(|&i| i == 4), "{method}");
-        if is_connect(method) {
+        if is_connect_or_auto(method) {
             assert_eq!(rec.edges, vec![[0, 1], [0, 3], [1, 2], [2, 3]], "{method}");
             assert_eq!(rec.status, Status::Polygon, "{method}");
         }
@@ -220,7 +236,7 @@ fn exact_duplicates_of_a_curve_are_ignored() {
         assert_eq!(rec.duplicates, duplicates, "{method}");
         assert_eq!(rec.stats.distinct_points, 100, "{method}");
         assert!(rec.edges.iter().flatten().all(|&i| i < 100), "{method}: a duplicate has an edge");
-        if is_connect(method) {
+        if is_connect_or_auto(method) {
             assert_eq!((&rec.status, &rec.edges), (&Status::Polygon, &base.edges), "{method}");
         }
     }
@@ -241,6 +257,12 @@ fn near_duplicates_1e_12_apart_stay_adjacent() {
             for i in 0..64 {
                 assert!(rec.edges.contains(&[i, i + 64]), "{method}: twin {i} not adjacent");
             }
+        }
+        if method == Method::SigAuto {
+            // Sampled at 1e-12 with gaps of 0.1 (u = 1e11): every twin pair is its own open
+            // curve.
+            sig_auto_keeps_open("near-duplicates 1e-12", &rec, 128, 64);
+            assert!((0..64).all(|i| rec.paths.contains(&vec![i, i + 64])));
         }
     }
 }
@@ -311,6 +333,11 @@ fn line_with_point_off(case: &str, n: usize, off: Point) -> Vec<(Method, Reconst
             assert_eq!(rec.status, Status::Polygon, "{case}, {method}");
             assert_eq!(rec.loops, vec![line_and_apex(n)], "{case}, {method}");
         }
+        if *method == Method::SigAuto {
+            // The closing edges to the apex are about n/2 long against a spacing of 1: one
+            // open path, the apex put between its two nearest line points.
+            sig_auto_keeps_open(case, rec, n + 1, 1);
+        }
     }
     results
 }
@@ -325,6 +352,9 @@ fn a_line_with_one_point_1e_9_off_is_a_thin_triangle() {
         if is_connect(method) {
             assert_eq!(rec.status, Status::Polygon, "{method}");
             assert_eq!(rec.loops, vec![line_and_apex(100)], "{method}");
+        }
+        if method == Method::SigAuto {
+            sig_auto_keeps_open("diagonal + point 1 ulp off", &rec, 101, 1);
         }
     }
 }
@@ -348,6 +378,9 @@ fn a_line_with_one_point_1e_300_off_spans_too_many_magnitudes() {
     for (method, rec) in run_all("line + point 1e-300 off (at scale 1e-300)", &points) {
         if is_connect(method) {
             assert_eq!(rec.loops, vec![line_and_apex(100)], "{method}");
+        }
+        if method == Method::SigAuto {
+            sig_auto_keeps_open("line + point off at scale 1e-300", &rec, 101, 1);
         }
     }
 }
@@ -385,7 +418,7 @@ fn square_grid(k: usize) {
     let case = format!("grid {k}x{k}");
     let points = grid(k);
     for (method, rec) in run_all(&case, &points) {
-        if is_connect(method) {
+        if is_connect_or_auto(method) {
             // One loop through every point but the left-out ones.
             let Status::SculptingStuck { left_out } = &rec.status else {
                 panic!("{case}, {method}: {:?}", rec.status);
@@ -466,6 +499,16 @@ fn exactly_cocircular_points_give_the_convex_polygon() {
         if method == Method::Connect2d {
             assert_eq!(rec.status, Status::Polygon, "{case}, {method}");
             assert!(rec.edges == s.edges, "{case}, {method}: not the convex polygon");
+        }
+        if method == Method::SigAuto {
+            // Gaps up to 236× (972 points) or 3000× (10⁵) apart are far beyond the join
+            // bound (twice the longest SIGDT spacing): SIG-AUTO returns open pieces, one path
+            // through every point at 972 points, 154 loops and 124 paths at 10⁵.
+            assert_eq!(rec.status, Status::Curves, "{case}, {method}");
+            let on_chains: usize = rec.loops.iter().chain(&rec.paths).map(Vec::len).sum();
+            assert_eq!(on_chains, s.points.len(), "{case}, {method}: a point is on no chain");
+            let chains = (rec.loops.len(), rec.paths.len());
+            assert_eq!(chains, if cfg!(debug_assertions) { (0, 1) } else { (154, 124) });
         }
         if method == Method::SigConnect2d {
             // Lattice points are far from uniform (neighbouring gaps differ by factors up to
