@@ -105,7 +105,8 @@ report: build py-build
 	  for f in sweep.csv rmse.svg exact.svg; do cp $(SWEEPS)/$$k/$$f $(REPORT)/sweeps/$$k-$$f; done; \
 	done
 
-## pictures: the README picture (what `make demo` draws) and the steps of docs/steps.md.
+## pictures: the README picture (what `make demo` draws), the steps of docs/steps.md and the
+## wins and failures of SIG-AUTO in docs/sig-auto.md (from $(DATA)).
 pictures: build py-build
 	$(SIGDT) render data/inputs/$(DEMO).xy --gt data/inputs/$(DEMO).gt -o docs/images/demo.svg
 	$(SIGDT) render data/inputs/glyph_e_reversed.xy --gt data/inputs/glyph_e_reversed.gt \
@@ -113,6 +114,18 @@ pictures: build py-build
 	$(SIGDT) render data/inputs/glyph_e_reversed.xy --layers points,boundary \
 	  -o docs/images/steps-inflated.svg
 	$(VPY) python/bench/steps_figure.py data/inputs/glyph_e_reversed.xy docs/images/steps.png
+	mkdir -p docs/images/sig-auto
+	for c in glyph_DejaVuSans_U0042 svgopen_Croco_path31_0_243 svg_manif_f5_path5_0_593; do \
+	  for m in sig-connect2d sig-auto; do \
+	    $(SIGDT) render $(DATA)/$$c.xy --gt $(DATA)/$$c.gt --method $$m --width 420 \
+	      -o docs/images/sig-auto/$$c.$$m.svg; \
+	  done; \
+	done
+	for c in glyphopen_DejaVuSerifCondensed-BoldItalic_U006E glyph_DejaVuSans_U004F \
+	  glyph_DejaVuSansCondensed_U0050_c0; do \
+	  $(SIGDT) render $(DATA)/$$c.xy --gt $(DATA)/$$c.gt --method sig-auto --width 420 \
+	    -o docs/images/sig-auto/$$c.sig-auto.svg; \
+	done
 
 clean:
 	rm -rf out $(VENV)

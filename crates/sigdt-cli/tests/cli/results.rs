@@ -221,3 +221,30 @@ fn shared_bezier_curve_matches_ground_truth() {
     let run = sigdt_in(&dir, &["reconstruct", input.to_str().unwrap()], None);
     run.ok().stdout_is(&expected);
 }
+
+#[test]
+fn sig_auto_writes_loops_with_holes_and_open_paths() {
+    // A ring (radii 3 and 1.5, nested) and a half circle apart from it.
+    let dir = tempdir();
+    let mut points: Vec<[f64; 2]> = circle(60, 3.0);
+    points.extend(circle(30, 1.5));
+    points.extend((0..20).map(|i| {
+        let a = std::f64::consts::PI * i as f64 / 19.0;
+        [10.0 + 2.0 * a.cos(), 2.0 * a.sin()]
+    }));
+    write_points(dir.path(), "ring.xy", &points);
+    let args = ["reconstruct", "ring.xy", "--method", "sig-auto"];
+    let loops = sigdt_in(dir.path(), &[&args[..], &["--format", "loops"]].concat(), None);
+    let lines: Vec<&str> = loops.ok().stdout.lines().collect();
+    let path: Vec<String> = (90..110).map(|i| i.to_string()).collect();
+    assert_eq!(lines.len(), 3, "{}", loops.stdout);
+    assert_eq!(lines[2], format!("path {}", path.join(" ")));
+    let wkt = sigdt_in(dir.path(), &[&args[..], &["--format", "wkt"]].concat(), None);
+    let text = &wkt.ok().stdout;
+    // One polygon with one hole, and the open line: a geometry collection.
+    assert!(text.starts_with("GEOMETRYCOLLECTION (POLYGON ((3.0 0.0, "), "{text}");
+    assert_eq!(text.matches("), (").count(), 1, "one hole: {text}");
+    assert!(text.contains(", LINESTRING (12.0 0.0, "), "{text}");
+    let verbose = sigdt_in(dir.path(), &[&args[..], &["--verbose"]].concat(), None);
+    assert!(verbose.expect(0).stderr.contains("curves"), "{}", verbose.stderr);
+}

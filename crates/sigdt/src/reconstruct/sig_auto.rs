@@ -13,7 +13,11 @@
 //! 2. **Everything else** (the spanning tree branches: extra SIGDT edges at sharp corners,
 //!    noise, dense clusters) is inflated and sculpted like SIG-CONNECT2D, but on the
 //!    component's own triangulation ([`closed_component`](super::closed_component)), so
-//!    curves nested in one another stay separate loops.
+//!    curves nested in one another stay separate loops. A loop is cut open at its longest
+//!    edge when that edge is more than twice the second longest. If some loop edge is more
+//!    than twice the longest edge of the component's SIGDT spanning forest (a leaf edge
+//!    reaching across), the component's SIGDT pieces are used as chains instead, when each
+//!    is a path with at most one-point spurs ([`spur_path`](super::spur_path)).
 //!
 //! # Guarantees
 //! - The output is always a set of vertex-disjoint simple loops and simple open paths made
@@ -22,8 +26,9 @@
 //!   polygon; when that polygon is the component's spanning path plus one edge, the closing
 //!   edge satisfies the join bound and the curve comes back closed.
 //! - An open curve whose two end samples are more than twice the longest sample spacing
-//!   apart is never closed; when its SIGDT2 component's spanning tree is the sample path
-//!   (dense sampling), it comes back as that path.
+//!   apart is never closed by a join; when its SIGDT2 component's spanning tree is the
+//!   sample path (dense sampling), it comes back as that path. A component that must be
+//!   inflated (its tree branches beyond one-point spurs) can still come back closed.
 //! - Separate curves whose SIGDT2 components are separate (each curve sampled more densely
 //!   than the gap between them) are reconstructed independently, nested or not.
 //! - When the fallback applies (a loop of a component's own triangulation that is not a
