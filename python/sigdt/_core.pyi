@@ -43,6 +43,7 @@ def reconstruct_many(
     method: str,
     leaf_elimination: bool,
     n_jobs: int | None = None,
+    _panic_in_set: int | None = None,  # test hook: that set panics in its worker
 ) -> list[_Raw]: ...
 def trace(
     points: npt.NDArray[np.float64], method: str, leaf_elimination: bool

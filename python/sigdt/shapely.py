@@ -50,8 +50,7 @@ def to_shapely(rec: Reconstruction) -> Any:
 
     rings = _rings(rec)
     polygons = [
-        shapely.Polygon(rings[shell], [rings[h] for h in holes])
-        for shell, holes in _nested(rings)
+        shapely.Polygon(rings[shell], [rings[h] for h in holes]) for shell, holes in _nested(rings)
     ]
     lines = [rec.points[p] for p in rec.paths]
     if len(polygons) == 1 and not lines:

@@ -398,7 +398,9 @@ def test_reconstruct_many_turns_a_panic_into_an_internal_error_naming_the_set(va
     assert message.startswith("point set 31: internal error in sigdt"), message
     assert "test hook" in message
     # The module is still usable afterwards.
-    assert sigdt.reconstruct_many(varied_sets[:5]) == [sigdt.reconstruct(p) for p in varied_sets[:5]]
+    assert sigdt.reconstruct_many(varied_sets[:5]) == [
+        sigdt.reconstruct(p) for p in varied_sets[:5]
+    ]
 
 
 @pytest.mark.parametrize("n_jobs", [0, -1, 1.5, "2"])
