@@ -93,3 +93,49 @@ fn distance_grid_with_two_far_apart_points() {
     let path: Vec<[usize; 2]> = (0..6).map(|i| [i, i + 1]).collect();
     evaluate_all(&points, &path, &[[0, 0], [6, 6]]);
 }
+
+/// An integer overflow inside `i_overlay` (debug builds; release builds wrapped silently):
+/// a ground-truth ring of subnormal coordinates, whose tiny extent made i_overlay's
+/// float-to-integer scale enormous. Fixed: `area_difference` scales the rings by a power of
+/// two into [1, 2) first. Fuzz input `eval/crash-11926346534a67d2b36ae3fa8bf73c8ac4626585`.
+#[test]
+fn area_of_subnormal_rings() {
+    let points = [
+        [10.0, -1.0],
+        [0.0, 0.0],
+        [1e-310, 0.0],
+        [2e-310, 0.0],
+        [3e-310, 0.0],
+        [4e-310, 0.0],
+        [5e-310, 0.0],
+        [6e-310, 0.0],
+        [0.0, 0.0],
+        [0.0, 1e-310],
+        [0.0, 2e-310],
+        [0.0, 3e-310],
+        [0.0, 4e-310],
+        [0.0, 5e-310],
+        [0.0, 6e-310],
+        [0.0, 7e-310],
+        [1e-310, 0.0],
+        [1e-310, 1e-310],
+        [1e-310, 2e-310],
+        [1e-310, 3e-310],
+        [1e-310, 4e-310],
+        [1e-310, 5e-310],
+        [1e-310, 6e-310],
+        [1e-310, 7e-310],
+        [2e-310, 0.0],
+        [2e-310, 1e-310],
+        [2e-310, 2e-310],
+        [2e-310, 3e-310],
+        [2e-310, 4e-310],
+        [2e-310, 5e-310],
+        [2e-310, 6e-310],
+        [2e-310, 7e-310],
+    ];
+    evaluate_all(&points, &[[16, 1], [13, 0]], &[[1, 2], [2, 15]]);
+    let area =
+        sigdt::eval::area_difference(&points, &[[16, 1], [13, 0]], &[[1, 2], [2, 15]]).unwrap();
+    assert!(area.area.is_finite() && area.area >= 0.0, "{area:?}");
+}

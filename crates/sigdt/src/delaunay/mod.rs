@@ -176,6 +176,12 @@ impl Triangulation {
         self.outgoing(v).chain(hull_in)
     }
 
+    /// Whether `a` and `b` are joined by a Delaunay edge (O(degree of `a`)).
+    #[inline]
+    pub fn has_edge(&self, a: u32, b: u32) -> bool {
+        self.incident(a).any(|h| self.other(h, a) == b)
+    }
+
     /// The vertex at the other end of half-edge `h` from `v`.
     #[inline]
     pub fn other(&self, h: u32, v: u32) -> u32 {

@@ -25,7 +25,7 @@
 //! # References
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 use super::chains::chains;
-use super::input::{check_all, edge_bbox, extent, proper_edges};
+use super::input::{check_all, edge_bbox, extent, proper_edges, UnitScale};
 use crate::{Edge, Point, Result};
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay_rule::OverlayRule;
@@ -45,7 +45,13 @@ pub struct AreaDifference {
 /// non-finite points or edges out of range.
 pub fn area_difference(points: &[Point], result: &[Edge], gt: &[Edge]) -> Result<AreaDifference> {
     check_all(points, result, gt)?;
-    let (r, g) = (rings(points, result), rings(points, gt));
+    let (mut r, mut g) = (rings(points, result), rings(points, gt));
+    // The rings scaled by a power of two into [1, 2): i_overlay's integer grid overflowed
+    // on rings of subnormal coordinates (fuzzing finding 5). Areas scale by its square.
+    let scale = UnitScale::of(r.iter().chain(&g).flatten().flatten().copied());
+    for p in r.iter_mut().chain(g.iter_mut()).flatten() {
+        *p = scale.apply(*p);
+    }
     let area = match (r.is_empty(), g.is_empty()) {
         (true, true) => 0.0,
         (false, true) => region_area(&r),
@@ -56,6 +62,7 @@ pub fn area_difference(points: &[Point], result: &[Edge], gt: &[Edge]) -> Result
             shapes_area(&shapes)
         }
     };
+    let area = scale.unscale_area(area);
     let box_area =
         edge_bbox(points, &proper_edges(gt)).map_or(0.0, |b| extent(b)[0] * extent(b)[1]);
     let normalised = (box_area > 0.0).then(|| area / box_area);

@@ -26,7 +26,7 @@
 //!
 //! [`SegmentGrid`]: super::grid
 use super::grid::{lerp, SegmentGrid};
-use super::input::{check_all, edge_bbox, extent, normalise};
+use super::input::{check_all, edge_bbox, extent, normalise, scaled_to_unit};
 use crate::{Edge, Point, Result};
 
 /// Distance errors of a reconstruction, as fractions of the ground truth's bounding-box
@@ -95,26 +95,6 @@ pub fn distance_errors(
         rmse_to_gt: (sum_rc / n_rc as f64).sqrt() / diag,
         hausdorff: max / diag,
     }))
-}
-
-/// `points` multiplied by the power of two that brings the largest coordinate magnitude into
-/// [1, 2): exact (short of subnormal underflow), and the errors are ratios to the diagonal,
-/// so they do not change; squared lengths can no longer overflow (they did beyond about
-/// 1e154, giving infinite or NaN errors).
-fn scaled_to_unit(points: &[Point]) -> Vec<Point> {
-    let largest = points.iter().flatten().fold(0.0f64, |m, &c| m.max(c.abs()));
-    if largest == 0.0 || !largest.is_finite() {
-        return points.to_vec();
-    }
-    let exponent = largest.log2().floor() as i32;
-    // Two steps, so that neither factor overflows or underflows on its own.
-    let (a, b) = (powi2(-exponent / 2), powi2(-exponent - (-exponent / 2)));
-    points.iter().map(|&[x, y]| [x * a * b, y * a * b]).collect()
-}
-
-/// 2^k for |k| ≤ 1023.
-fn powi2(k: i32) -> f64 {
-    f64::from_bits(((1023 + k) as u64) << 52)
 }
 
 /// Calls `f` on every distinct vertex of `edges` and on the interior samples of every edge,

@@ -82,3 +82,50 @@ mod tests {
         assert_eq!(proper_edges(&[[2, 1], [1, 2], [3, 3]]), vec![[1, 2]]);
     }
 }
+
+/// `points` multiplied by the [`UnitScale`] of their coordinates.
+pub(crate) fn scaled_to_unit(points: &[Point]) -> Vec<Point> {
+    let scale = UnitScale::of(points.iter().flatten().copied());
+    points.iter().map(|&p| scale.apply(p)).collect()
+}
+
+/// The power of two `2^k` that brings the largest magnitude among some coordinates into
+/// [1, 2) (1 when they are all zero or one is not finite), kept as two factors because
+/// `2^k` itself may not be a finite `f64` (subnormal input needs k up to 1074).
+///
+/// Multiplying by it is exact (short of subnormal underflow), so ratios such as distances
+/// over the diagonal do not change, while squared lengths and areas can no longer overflow
+/// (beyond about 1e154) or vanish (subnormal input): they gave infinite or NaN distances,
+/// and an integer overflow inside `i_overlay` (fuzzing findings 4 and 5).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct UnitScale([f64; 2]);
+
+impl UnitScale {
+    pub(crate) fn of(coordinates: impl Iterator<Item = f64>) -> UnitScale {
+        let largest = coordinates.fold(0.0f64, |m, c| m.max(c.abs()));
+        if largest == 0.0 || !largest.is_finite() {
+            return UnitScale([1.0, 1.0]);
+        }
+        // log2 of a subnormal is exact enough for its exponent.
+        let k = -(largest.log2().floor() as i32);
+        UnitScale([power_of_two(k / 2), power_of_two(k - k / 2)])
+    }
+
+    /// `p · 2^k`.
+    pub(crate) fn apply(self, p: Point) -> Point {
+        let [a, b] = self.0;
+        [p[0] * a * b, p[1] * a * b]
+    }
+
+    /// An area measured on scaled points, in the original units (`area / 4^k`; it may
+    /// overflow or underflow, as the true value does).
+    pub(crate) fn unscale_area(self, area: f64) -> f64 {
+        let [a, b] = self.0;
+        area / a / a / b / b
+    }
+}
+
+/// 2^k for |k| ≤ 1022.
+fn power_of_two(k: i32) -> f64 {
+    f64::from_bits(((1023 + k) as u64) << 52)
+}

@@ -94,7 +94,7 @@ fn from_loops(
         let open_at = opening_edge(k, length);
         for a in (0..k).filter(|&a| Some(a) != open_at) {
             let [p, q] = link(a);
-            if !dt.incident(p).any(|h| dt.other(h, p) == q) {
+            if !dt.has_edge(p, q) {
                 return None;
             }
             edges.push([p, q]);

@@ -61,7 +61,7 @@ pub fn path_with_spurs(
         spurs += 1;
         for j in [i.wrapping_sub(1), i + 1].into_iter().filter(|&j| j < path.len()) {
             let x = path[j];
-            if dt.incident(s).any(|h| dt.other(h, s) == x) {
+            if dt.has_edge(s, x) {
                 let extra = length(t, s) + length(s, x) - length(t, x);
                 options.push((extra, i.min(j), s));
             }
