@@ -1,7 +1,8 @@
 //! Property tests of the paper's claims and the API's invariants on random smooth closed
 //! curves ([MOW22] Theorem 1): a dense sample with non-uniformity u < 2 has every
 //! ground-truth edge in SIGDT, and SIG-CONNECT2D returns exactly the ground truth. Results
-//! do not depend on input order, translation, uniform scaling or a 90° rotation.
+//! do not depend on input order, translation, uniform scaling or a 90° rotation. SIG-AUTO
+//! returns the same closed curve, and keeps the curve open when a stretch of it is cut out.
 //!
 //! The seed is fixed so CI is reproducible; explore with e.g.
 //! `PROPTEST_RNG_SEED=123 PROPTEST_CASES=2000 cargo test --release --test properties`.
@@ -9,7 +10,7 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 use sigdt::curves::{Blob, Modulation, Rng, Sample};
 use sigdt::testing::check_reconstruction;
-use sigdt::{proximity_graph, reconstruct, Edge, GraphKind, Options, Point};
+use sigdt::{proximity_graph, reconstruct, Edge, GraphKind, Method, Options, Point, Status};
 
 /// A random blob sampled densely: spacing at most 0.3 of the blob's guaranteed curvature
 /// radius bound (which bounds lfs from above only, so this is a practical, not a proven,
@@ -94,5 +95,33 @@ proptest! {
         let rotated = reconstruct(&rotated, &options).unwrap();
         prop_assert_eq!(&rotated.edges, &base.edges, "90° rotation");
         prop_assert_eq!(&rotated.loops, &base.loops, "rotation keeps counter-clockwise loops");
+    }
+
+    #[test]
+    fn sig_auto_closes_dense_closed_curves_and_keeps_cut_curves_open(
+        sample in dense_blob(),
+        shuffle in any::<u64>(),
+        cut_at in 0.0f64..1.0,
+        cut_fraction in 0.1f64..0.5,
+    ) {
+        let options = Options { method: Method::SigAuto, ..Options::default() };
+        let s = sample.shuffled(shuffle);
+        let rec = reconstruct(&s.points, &options).unwrap();
+        prop_assert!(check_reconstruction(&s.points, &rec).is_ok());
+        prop_assert_eq!(&rec.status, &Status::Polygon);
+        prop_assert_eq!(&rec.edges, &s.edges, "closed curve not exact");
+
+        // Remove a run of at least 10 % of the samples (in curve order): the gap is many
+        // spacings wide, far beyond twice the longest edge, so the rest is one open path.
+        let n = sample.points.len();
+        let (start, len) = ((cut_at * n as f64) as usize, (cut_fraction * n as f64) as usize);
+        let kept: Vec<usize> = (0..n).map(|k| (start + len + k) % n).take(n - len).collect();
+        let points: Vec<Point> = kept.iter().map(|&k| sample.points[k]).collect();
+        let rec = reconstruct(&points, &options).unwrap();
+        prop_assert!(check_reconstruction(&points, &rec).is_ok());
+        prop_assert_eq!(&rec.status, &Status::Curves);
+        prop_assert!(rec.loops.is_empty());
+        let path: Vec<usize> = (0..points.len()).collect();
+        prop_assert_eq!(&rec.paths, &vec![path], "open curve not exact");
     }
 }
