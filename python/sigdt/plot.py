@@ -17,19 +17,32 @@ __all__ = ["plot", "plot_steps"]
 
 
 def plot(rec: Reconstruction, ax: Any = None, **style: Any) -> Any:
-    """Draw the filled loops, the edges and the points; returns the axes.
+    """Draw the filled loops (a loop nested in another is a hole of it), the edges (open
+    paths included) and the points; returns the axes.
 
     ``style`` may override ``fill``, ``edge_color``, ``point_color``, ``linewidth`` and
     ``markersize``.
     """
     import matplotlib.pyplot as plt
     from matplotlib.collections import LineCollection
+    from matplotlib.patches import PathPatch
+    from matplotlib.path import Path
+
+    from .shapely import _nested
 
     if ax is None:
         _, ax = plt.subplots()
     pts = rec.points
-    for loop in rec.loops:
-        ax.fill(*pts[loop].T, color=style.get("fill", "#dbe9f6"), zorder=0)
+    rings = [pts[loop] for loop in rec.loops]
+    for shell, holes in _nested(rings):
+        # Holes clockwise against the counter-clockwise shell: a hole under either fill rule.
+        parts = [rings[shell]] + [rings[h][::-1] for h in holes]
+        vertices = np.concatenate([np.r_[r, r[:1]] for r in parts])
+        codes = np.concatenate(
+            [[Path.MOVETO] + [Path.LINETO] * (len(r) - 1) + [Path.CLOSEPOLY] for r in parts]
+        )
+        patch = PathPatch(Path(vertices, codes), color=style.get("fill", "#dbe9f6"), zorder=0)
+        ax.add_patch(patch)
     if len(rec.edges):
         segments = pts[rec.edges]
         ax.add_collection(

@@ -1,4 +1,5 @@
-"""Matplotlib drawing with the Agg backend: one LineCollection, one fill patch per loop."""
+"""Matplotlib drawing with the Agg backend: one LineCollection, one fill patch per polygon
+(a loop nested in another is its hole)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.axes import Axes
 from matplotlib.collections import LineCollection
-from matplotlib.patches import Polygon
+from matplotlib.patches import PathPatch
 
 
 @pytest.fixture(autouse=True)
@@ -32,7 +33,7 @@ def test_plot_draws_edges_fills_and_points():
     assert isinstance(ax, Axes)
     (edges,) = _line_collections(ax)
     assert len(edges.get_segments()) == len(rec.edges) == 100
-    fills = [p for p in ax.patches if isinstance(p, Polygon)]
+    fills = [p for p in ax.patches if isinstance(p, PathPatch)]
     assert len(fills) == len(rec.loops) == 2
     (dots,) = ax.lines
     assert len(dots.get_xdata()) == 100
@@ -60,3 +61,24 @@ def test_plot_of_degenerate_results(points, n_segments):
     assert sum(len(c.get_segments()) for c in _line_collections(ax)) == n_segments
     assert len(ax.patches) == 0
     ax.figure.canvas.draw()
+
+
+def test_plot_fills_a_ring_with_its_hole_and_draws_open_paths():
+    t = np.linspace(0.0, np.pi, 20)
+    points = np.r_[blob(90) * 3.0, blob(40), np.c_[8.0 + np.cos(t), np.sin(t)]]
+    rec = sigdt.reconstruct(points, method="sig-auto")
+    assert len(rec.loops) == 2 and len(rec.paths) == 1
+    ax = rec.plot()
+    assert len(ax.patches) == 1  # one polygon: the outer loop with the inner one as its hole
+    (edges,) = _line_collections(ax)
+    assert len(edges.get_segments()) == len(rec.edges) == 90 + 40 + 19
+    ax.figure.canvas.draw()
+    pixels = np.asarray(ax.figure.canvas.buffer_rgba())
+
+    def colour_at(x, y):
+        px, py = ax.transData.transform((x, y))
+        return tuple(pixels[pixels.shape[0] - int(py), int(px), :3])
+
+    fill = tuple(int(255 * c) for c in matplotlib.colors.to_rgb("#dbe9f6"))
+    assert colour_at(2.0, 0.0) == fill  # in the ring
+    assert colour_at(0.0, 0.3) == (255, 255, 255)  # in the hole
