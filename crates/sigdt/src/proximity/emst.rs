@@ -20,23 +20,53 @@ pub fn emst_mask(dt: &Triangulation) -> EdgeMask {
 /// tree per connected component of that subgraph. Ties are broken by the edges' input
 /// indices, so the forest does not depend on the vertex numbering.
 pub fn minimum_spanning_forest(dt: &Triangulation, keep: impl Fn(u32) -> bool) -> EdgeMask {
-    let mut edges: Vec<(f64, usize, usize, u32)> = dt
-        .edge_halfedges()
-        .filter(|&h| keep(h))
-        .map(|h| {
-            let (a, b) = (dt.input_index(dt.origin(h)), dt.input_index(dt.dest(h)));
-            (dt.length(h), a.min(b), a.max(b), h)
-        })
-        .collect();
-    edges.sort_unstable_by(|x, y| x.0.total_cmp(&y.0).then((x.1, x.2).cmp(&(y.1, y.2))));
-    let mut uf = UnionFind::new(dt.num_vertices());
+    let sorted = sorted_by_length(dt, dt.edge_halfedges().filter(|&h| keep(h)));
     let mut mask = EdgeMask::new(dt);
-    for (_, _, _, h) in edges {
-        if uf.union(dt.origin(h), dt.dest(h)) {
-            mask.set(dt, h, true);
-        }
+    for h in kruskal(dt, sorted) {
+        mask.set(dt, h, true);
     }
     mask
+}
+
+/// The half-edges `edges` sorted by `(length, lower input index, higher input index)`, the
+/// order in which [`kruskal`] must see them.
+pub fn sorted_by_length(dt: &Triangulation, edges: impl Iterator<Item = u32>) -> Vec<u32> {
+    let mut keyed: Vec<(u64, u32, u32, u32)> = edges
+        .map(|h| {
+            let (a, b) = (dt.input_index(dt.origin(h)) as u32, dt.input_index(dt.dest(h)) as u32);
+            // Lengths are non-negative, so their bit patterns sort like the numbers.
+            (dt.length(h).to_bits(), a.min(b), a.max(b), h)
+        })
+        .collect();
+    keyed.sort_unstable();
+    keyed.into_iter().map(|k| k.3).collect()
+}
+
+/// Kruskal's algorithm over half-edges given in [`sorted_by_length`] order: the forest's
+/// half-edges, in that order.
+pub fn kruskal(dt: &Triangulation, sorted: impl IntoIterator<Item = u32>) -> Vec<u32> {
+    let mut uf = UnionFind::new(dt.num_vertices());
+    sorted.into_iter().filter(|&h| uf.union(dt.origin(h), dt.dest(h))).collect()
+}
+
+/// Merges two lists in [`sorted_by_length`] order into one.
+pub fn merge_sorted(dt: &Triangulation, a: &[u32], b: &[u32]) -> Vec<u32> {
+    let key = |h: u32| {
+        let (x, y) = (dt.input_index(dt.origin(h)), dt.input_index(dt.dest(h)));
+        (dt.length(h).to_bits(), x.min(y), x.max(y))
+    };
+    let (mut i, mut j) = (0, 0);
+    let mut out = Vec::with_capacity(a.len() + b.len());
+    while i < a.len() || j < b.len() {
+        if j == b.len() || (i < a.len() && key(a[i]) <= key(b[j])) {
+            out.push(a[i]);
+            i += 1;
+        } else {
+            out.push(b[j]);
+            j += 1;
+        }
+    }
+    out
 }
 
 /// The EMST as sorted input-index pairs (the path along the line for collinear input).

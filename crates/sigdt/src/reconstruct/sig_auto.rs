@@ -44,13 +44,14 @@ use super::closed_component::closed_component;
 use super::degenerate::degenerate_result;
 use super::from_edges::from_vertex_pairs;
 use super::result::{Reconstruction, Stats, Status};
-use super::sig_connect2d::{initial_graph, sig_connect2d_on};
+use super::sig_connect2d::sig_connect2d_on;
 use super::spur_path::path_with_spurs;
 use crate::delaunay::Triangulation;
 use crate::geometry::distance;
 use crate::graph::UnionFind;
-use crate::proximity::emst::minimum_spanning_forest;
-use crate::proximity::sigdt::sigdt_mask;
+use crate::proximity::emst::{kruskal, merge_sorted, sorted_by_length};
+use crate::proximity::leaf_elimination::eliminate_leaves_with_degrees;
+use crate::proximity::sigdt::sigdt_with_degrees;
 use crate::proximity::sigdt::TIE_SLACK;
 
 /// Reconstructs `dt`'s points with SIG-AUTO (see the module docs).
@@ -58,18 +59,25 @@ pub fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
-    let (graph, leaf_edges_added) = initial_graph(dt, true);
-    let forest = minimum_spanning_forest(dt, |h| graph.contains(h));
-    // The same forest without the leaf edges: the sample spacing of every SIGDT piece.
-    let sigdt = Tree::new(dt, {
-        let sigdt = sigdt_mask(dt);
-        let forest = minimum_spanning_forest(dt, |h| sigdt.contains(h));
-        move |h| forest.contains(h)
-    });
+    // SIGDT and SIGDT2 (the leaf edges added), and the minimum spanning forests of both: by
+    // the cycle property, SIGDT2's forest is the forest of SIGDT's forest plus the leaf
+    // edges, so one sort of SIGDT and a merge with the few leaf edges give both.
+    let (sigdt, degree) = sigdt_with_degrees(dt);
+    let mut graph = sigdt.clone();
+    let leaf_edges_added = eliminate_leaves_with_degrees(dt, &mut graph, degree);
+    let sigdt_forest =
+        kruskal(dt, sorted_by_length(dt, dt.edge_halfedges().filter(|&h| sigdt.contains(h))));
+    let leaf_edges = sorted_by_length(
+        dt,
+        dt.edge_halfedges().filter(|&h| graph.contains(h) && !sigdt.contains(h)),
+    );
+    let forest = kruskal(dt, merge_sorted(dt, &sigdt_forest, &leaf_edges));
+    // The SIGDT forest gives the sample spacing of every SIGDT piece.
+    let sigdt = Tree::new(dt, &sigdt_forest);
     let n = dt.num_vertices();
-    let tree = Tree::new(dt, |h| forest.contains(h));
+    let tree = Tree::new(dt, &forest);
     let mut components = UnionFind::new(n);
-    for h in dt.edge_halfedges().filter(|&h| forest.contains(h)) {
+    for &h in &forest {
         components.union(dt.origin(h), dt.dest(h));
     }
     // Vertices grouped by component, in vertex order.
@@ -162,14 +170,10 @@ struct Tree {
 }
 
 impl Tree {
-    /// The forest of the Delaunay edges for which `contains(h)` holds.
-    fn new(dt: &Triangulation, contains: impl Fn(u32) -> bool) -> Tree {
+    /// The forest with the half-edges `forest`.
+    fn new(dt: &Triangulation, forest: &[u32]) -> Tree {
         let n = dt.num_vertices();
-        let edges: Vec<[u32; 2]> = dt
-            .edge_halfedges()
-            .filter(|&h| contains(h))
-            .map(|h| [dt.origin(h), dt.dest(h)])
-            .collect();
+        let edges: Vec<[u32; 2]> = forest.iter().map(|&h| [dt.origin(h), dt.dest(h)]).collect();
         let mut start = vec![0; n + 1];
         for &[a, b] in &edges {
             start[a as usize + 1] += 1;
@@ -235,6 +239,7 @@ fn add_counts(total: &mut Stats, part: &Stats) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::proximity::emst::minimum_spanning_forest;
     use crate::testing::check_reconstruction;
     use crate::Point;
     use std::f64::consts::TAU;
