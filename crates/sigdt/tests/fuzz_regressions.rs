@@ -139,3 +139,29 @@ fn area_of_subnormal_rings() {
         sigdt::eval::area_difference(&points, &[[16, 1], [13, 0]], &[[1, 2], [2, 15]]).unwrap();
     assert!(area.area.is_finite() && area.area >= 0.0, "{area:?}");
 }
+
+/// `evaluate` took more than 10 s (fuzzing finding 6): ground-truth edges between subnormal
+/// points next to an ordinary one. The points were scaled by their overall largest
+/// coordinate (1), the edges' diagonal stayed subnormal, the sample spacing `diag / 2000`
+/// underflowed to 0 and every edge got 2^24 samples of slow subnormal arithmetic. Fixed:
+/// the scale comes from the edges' own ends. Fuzz input
+/// `eval/timeout-a22e4856758eb76271baaa88bf2c22f83a27308b`.
+#[test]
+fn metrics_of_subnormal_edges_next_to_ordinary_points() {
+    let t = -5e-324;
+    let points = [
+        [0.0, 0.0],
+        [t, t],
+        [0.0, t],
+        [t, t],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [t, t],
+        [t, t],
+        [-1.0, -1.0],
+        [t, t],
+    ];
+    evaluate_all(&points, &[[4, 2], [1, 1]], &[[2, 3], [0, 3]]);
+    let errors = sigdt::eval::distance_errors(&points, &[[4, 2]], &[[2, 3], [0, 3]]);
+    assert!(errors.unwrap().is_some_and(|e| e.hausdorff.is_finite()));
+}

@@ -83,12 +83,6 @@ mod tests {
     }
 }
 
-/// `points` multiplied by the [`UnitScale`] of their coordinates.
-pub(crate) fn scaled_to_unit(points: &[Point]) -> Vec<Point> {
-    let scale = UnitScale::of(points.iter().flatten().copied());
-    points.iter().map(|&p| scale.apply(p)).collect()
-}
-
 /// The power of two `2^k` that brings the largest magnitude among some coordinates into
 /// [1, 2) (1 when they are all zero or one is not finite), kept as two factors because
 /// `2^k` itself may not be a finite `f64` (subnormal input needs k up to 1074).
