@@ -15,6 +15,7 @@ pub mod result;
 pub mod sculpt;
 pub mod sig_auto;
 pub mod sig_connect2d;
+pub mod spanning_forests;
 pub mod spur_path;
 pub mod trace;
 

@@ -45,13 +45,9 @@ use super::degenerate::degenerate_result;
 use super::from_edges::from_vertex_pairs;
 use super::result::{Reconstruction, Stats, Status};
 use super::sig_connect2d::sig_connect2d_on;
-use super::spur_path::path_with_spurs;
+use super::spanning_forests::Forests;
 use crate::delaunay::Triangulation;
 use crate::geometry::distance;
-use crate::graph::UnionFind;
-use crate::proximity::emst::{kruskal, merge_sorted, sorted_by_length};
-use crate::proximity::leaf_elimination::eliminate_leaves_with_degrees;
-use crate::proximity::sigdt::sigdt_with_degrees;
 use crate::proximity::sigdt::TIE_SLACK;
 
 /// Reconstructs `dt`'s points with SIG-AUTO (see the module docs).
@@ -59,58 +55,30 @@ pub fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
-    // SIGDT and SIGDT2 (the leaf edges added), and the minimum spanning forests of both: by
-    // the cycle property, SIGDT2's forest is the forest of SIGDT's forest plus the leaf
-    // edges, so one sort of SIGDT and a merge with the few leaf edges give both.
-    let (sigdt, degree) = sigdt_with_degrees(dt);
-    let mut graph = sigdt.clone();
-    let leaf_edges_added = eliminate_leaves_with_degrees(dt, &mut graph, degree);
-    let sigdt_forest =
-        kruskal(dt, sorted_by_length(dt, dt.edge_halfedges().filter(|&h| sigdt.contains(h))));
-    let leaf_edges = sorted_by_length(
-        dt,
-        dt.edge_halfedges().filter(|&h| graph.contains(h) && !sigdt.contains(h)),
-    );
-    let forest = kruskal(dt, merge_sorted(dt, &sigdt_forest, &leaf_edges));
-    // The SIGDT forest gives the sample spacing of every SIGDT piece.
-    let sigdt = Tree::new(dt, &sigdt_forest);
-    let n = dt.num_vertices();
-    let tree = Tree::new(dt, &forest);
-    let mut components = UnionFind::new(n);
-    for &h in &forest {
-        components.union(dt.origin(h), dt.dest(h));
-    }
-    // Vertices grouped by component, in vertex order.
-    let root: Vec<u32> = (0..n as u32).map(|v| components.find(v)).collect();
-    let mut branched = vec![false; n];
-    for v in 0..n {
-        if tree.degree(v as u32) > 2 {
-            branched[root[v] as usize] = true;
-        }
-    }
-    let mut members: Vec<Vec<u32>> = vec![Vec::new(); n];
-    for v in 0..n as u32 {
-        members[root[v as usize] as usize].push(v);
-    }
-
-    let mut stats = Stats { graph_edges: graph.len(), leaf_edges_added, ..Stats::default() };
+    let forests = Forests::new(dt);
+    let (graph, sigdt, tree) = (&forests.graph, &forests.sigdt, &forests.sigdt2);
+    let mut stats = Stats {
+        graph_edges: graph.len(),
+        leaf_edges_added: forests.leaf_edges_added,
+        ..Stats::default()
+    };
     let mut pairs: Vec<[u32; 2]> = Vec::new();
     let mut left_out: Vec<usize> = Vec::new();
     let mut chains = Chains::new(dt);
-    for (r, vertices) in members.iter().enumerate().filter(|(_, m)| !m.is_empty()) {
-        if !branched[r] {
-            let path = tree.walk(vertices);
+    for (vertices, branched) in forests.components() {
+        if !branched {
+            let path = tree.walk(&vertices);
             pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
             chains.add(&path);
             continue;
         }
-        let Some(closed) = closed_component(dt, &graph, vertices) else {
+        let Some(closed) = closed_component(dt, graph, &vertices) else {
             return sig_connect2d_on(dt, true);
         };
-        let bound = JOIN_RATIO * sigdt.longest_edge(dt, vertices) * (1.0 + TIE_SLACK);
+        let bound = JOIN_RATIO * sigdt.longest_edge(dt, &vertices) * (1.0 + TIE_SLACK);
         let within = |&[a, b]: &[u32; 2]| distance(dt.point(a), dt.point(b)) <= bound;
         if !closed.edges.iter().all(within) {
-            if let Some(paths) = sigdt_pieces_as_paths(dt, &sigdt, vertices) {
+            if let Some(paths) = sigdt.pieces_as_paths(dt, &vertices) {
                 for path in paths {
                     pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
                     chains.add(&path);
@@ -129,102 +97,6 @@ pub fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
         rec.status = Status::SculptingStuck { left_out };
     }
     rec
-}
-
-/// The pieces of `vertices` in the forest `tree`, each as a path (walked, or with its spurs
-/// put in), or `None` if some piece is not a path with spurs.
-fn sigdt_pieces_as_paths(
-    dt: &Triangulation,
-    tree: &Tree,
-    vertices: &[u32],
-) -> Option<Vec<Vec<u32>>> {
-    let mut seen: std::collections::HashSet<u32> = Default::default();
-    let mut paths = Vec::new();
-    for &v in vertices {
-        if !seen.insert(v) {
-            continue;
-        }
-        let mut piece = vec![v];
-        let mut k = 0;
-        while k < piece.len() {
-            for &w in tree.neighbours(piece[k]) {
-                if seen.insert(w) {
-                    piece.push(w);
-                }
-            }
-            k += 1;
-        }
-        if piece.iter().all(|&x| tree.degree(x) <= 2) {
-            paths.push(tree.walk(&piece));
-        } else {
-            paths.push(path_with_spurs(dt, &piece, |x| tree.neighbours(x).to_vec())?);
-        }
-    }
-    Some(paths)
-}
-
-/// A forest over the triangulation's vertices as compressed adjacency lists.
-struct Tree {
-    start: Vec<usize>,
-    entries: Vec<u32>,
-}
-
-impl Tree {
-    /// The forest with the half-edges `forest`.
-    fn new(dt: &Triangulation, forest: &[u32]) -> Tree {
-        let n = dt.num_vertices();
-        let edges: Vec<[u32; 2]> = forest.iter().map(|&h| [dt.origin(h), dt.dest(h)]).collect();
-        let mut start = vec![0; n + 1];
-        for &[a, b] in &edges {
-            start[a as usize + 1] += 1;
-            start[b as usize + 1] += 1;
-        }
-        for v in 0..n {
-            start[v + 1] += start[v];
-        }
-        let mut fill = start.clone();
-        let mut entries = vec![0; 2 * edges.len()];
-        for &[a, b] in &edges {
-            for (x, y) in [(a, b), (b, a)] {
-                entries[fill[x as usize]] = y;
-                fill[x as usize] += 1;
-            }
-        }
-        Tree { start, entries }
-    }
-
-    fn neighbours(&self, v: u32) -> &[u32] {
-        &self.entries[self.start[v as usize]..self.start[v as usize + 1]]
-    }
-
-    /// The longest tree edge at any of `vertices`.
-    fn longest_edge(&self, dt: &Triangulation, vertices: &[u32]) -> f64 {
-        vertices
-            .iter()
-            .flat_map(|&v| self.neighbours(v).iter().map(move |&w| (v, w)))
-            .map(|(v, w)| distance(dt.point(v), dt.point(w)))
-            .fold(0.0, f64::max)
-    }
-
-    fn degree(&self, v: u32) -> usize {
-        self.neighbours(v).len()
-    }
-
-    /// The vertices of a path-shaped component in order from one end.
-    fn walk(&self, vertices: &[u32]) -> Vec<u32> {
-        let start = vertices.iter().copied().find(|&v| self.degree(v) <= 1).unwrap_or(vertices[0]);
-        let mut path = vec![start];
-        let (mut previous, mut current) = (u32::MAX, start);
-        while let Some(&step) = self.neighbours(current).iter().find(|&&w| w != previous) {
-            if path.len() == vertices.len() {
-                break;
-            }
-            path.push(step);
-            previous = current;
-            current = step;
-        }
-        path
-    }
 }
 
 /// Adds the inflating and sculpting counts of one component to `total`.
