@@ -165,3 +165,31 @@ fn metrics_of_subnormal_edges_next_to_ordinary_points() {
     let errors = sigdt::eval::distance_errors(&points, &[[4, 2]], &[[2, 3], [0, 3]]);
     assert!(errors.unwrap().is_some_and(|e| e.hausdorff.is_finite()));
 }
+
+/// Finding 6 again, by another way in: a self loop on an ordinary point in the result kept
+/// the scale at 1, the ground truth's subnormal diagonal made the spacing 0, and every edge
+/// got 2^24 samples (8 s). Fixed: the sample budget is counted in samples, not derived from
+/// a spacing. Fuzz input `eval/slow-unit-0e8a400b26882218b66464b46a48a39b3e42309c`.
+#[test]
+fn metrics_of_subnormal_edges_with_a_self_loop_far_away() {
+    let points = [
+        [0.0, 0.0],
+        [-1.0, -1.0],
+        [0.0, -5e-324],
+        [-5e-324, -5e-324],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [0.0, 0.0],
+        [-5e-324, -5e-324],
+        [-5e-324, -5e-324],
+        [-5e-324, -5e-324],
+        [-5e-324, -5e-324],
+        [-5e-324, -5e-324],
+        [-5e-324, -5e-324],
+    ];
+    evaluate_all(&points, &[[16, 2], [1, 1]], &[[2, 3], [0, 8]]);
+}

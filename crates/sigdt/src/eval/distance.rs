@@ -104,26 +104,34 @@ pub fn distance_errors(
 /// Calls `f` on every distinct vertex of `edges` and on the interior samples of every edge,
 /// spaced at most `h` apart.
 ///
-/// The spacing grows beyond `h` when the edges are so long that `h` would give more than
-/// [`MAX_SAMPLES`] samples (a result edge far outside the ground truth's box): the errors
-/// stay exact at the vertices and within the coarser spacing elsewhere.
+/// The spacing grows beyond `h` when `h` would give more than [`MAX_SAMPLES`] interior
+/// samples in all (a result edge far outside the ground truth's box, or an `h` that
+/// underflowed to 0 on subnormal edges): the samples are then shared out by length, and the
+/// errors stay exact at the vertices and within the coarser spacing elsewhere. The budget is
+/// counted in samples, not derived from a spacing, so it holds whatever the magnitudes.
 fn for_each_sample(points: &[Point], edges: &[Edge], h: f64, mut f: impl FnMut(Point)) {
-    let total: f64 = edges
-        .iter()
-        .map(|&[i, j]| (points[i][0] - points[j][0]).hypot(points[i][1] - points[j][1]))
-        .sum();
-    let h = h.max(total / MAX_SAMPLES as f64);
+    let length = |&[i, j]: &Edge| (points[i][0] - points[j][0]).hypot(points[i][1] - points[j][1]);
+    let total: f64 = edges.iter().map(length).sum();
+    let budget = MAX_SAMPLES as f64;
+    // Interior samples of an edge of length `len`: len / h, or its share of the budget.
+    let within_budget = h > 0.0 && total / h <= budget;
     let mut vertices: Vec<usize> = edges.iter().flatten().copied().collect();
     vertices.sort_unstable();
     vertices.dedup();
     for &v in &vertices {
         f(points[v]);
     }
-    for &[i, j] in edges {
-        let (p, q) = (points[i], points[j]);
-        // At most 2^24 samples per edge, so a pathological h cannot stall the evaluation.
-        let pieces = ((p[0] - q[0]).hypot(p[1] - q[1]) / h).ceil().clamp(1.0, 16_777_216.0);
-        let pieces = pieces as usize;
+    for edge in edges {
+        let len = length(edge);
+        let pieces = if within_budget {
+            len / h
+        } else if total > 0.0 {
+            budget * (len / total)
+        } else {
+            1.0
+        };
+        let pieces = pieces.ceil().clamp(1.0, budget) as usize;
+        let (p, q) = (points[edge[0]], points[edge[1]]);
         for k in 1..pieces {
             f(lerp(p, q, k as f64 / pieces as f64));
         }
