@@ -76,7 +76,7 @@ fn distance_grid_huge_coordinates() {
 /// truth 52 across was sampled every 52/2000 (capped at 2^24 samples per edge), and each
 /// sample far outside the ground truth's segment grid walked O(side²) cells of a grid with
 /// up to 4097 cells a side. Fixed: the grid has at most 2√m + 1 cells a side, and an edge
-/// set gets at most 2^22 interior samples. Fuzz input
+/// set gets at most 2^20 interior samples. Fuzz input
 /// `eval/timeout-d9e581de43ff62f8ba700dd6d03f8a38567ced2c`, shortened.
 #[test]
 fn distance_sampling_far_outside_the_ground_truth() {
