@@ -35,10 +35,11 @@ pub fn closed_component(
     vertices: &[u32],
 ) -> Option<ClosedComponent> {
     if vertices.len() == dt.num_vertices() {
-        // One component holding every point: its triangulation is `dt` itself.
+        // One component holding every point: its triangulation is `dt` itself, so its loop
+        // edges are edges of `dt` and need no check.
         let rec = inflate_and_sculpt(dt, graph, 0);
         let vertex_of = vertex_numbers(dt);
-        return from_loops(dt, &rec, |i| vertex_of[i]);
+        return from_loops(dt, &rec, |i| vertex_of[i], false);
     }
     let points: Vec<_> = vertices.iter().map(|&v| dt.point(v)).collect();
     let sub = Triangulation::new(&points).ok()?;
@@ -64,7 +65,7 @@ pub fn closed_component(
         }
     }
     let rec = inflate_and_sculpt(&sub, &mask, 0);
-    from_loops(dt, &rec, |i| vertices[i])
+    from_loops(dt, &rec, |i| vertices[i], true)
 }
 
 /// Every input index's vertex of `dt` (duplicates map to their representative's).
@@ -77,11 +78,12 @@ fn vertex_numbers(dt: &Triangulation) -> Vec<u32> {
 }
 
 /// The loops of `rec` (indices mapped to vertices of `dt` by `vertex`), each cut open at
-/// [`opening_edge`]; `None` if a link is not an edge of `dt`.
+/// [`opening_edge`]; `None` if `check_edges` is set and a link is not an edge of `dt`.
 fn from_loops(
     dt: &Triangulation,
     rec: &Reconstruction,
     vertex: impl Fn(usize) -> u32,
+    check_edges: bool,
 ) -> Option<ClosedComponent> {
     let mut edges = Vec::with_capacity(rec.edges.len());
     for cycle in &rec.loops {
@@ -94,7 +96,7 @@ fn from_loops(
         let open_at = opening_edge(k, length);
         for a in (0..k).filter(|&a| Some(a) != open_at) {
             let [p, q] = link(a);
-            if !dt.has_edge(p, q) {
+            if check_edges && !dt.has_edge(p, q) {
                 return None;
             }
             edges.push([p, q]);
