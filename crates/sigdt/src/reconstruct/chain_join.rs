@@ -28,7 +28,9 @@ use crate::delaunay::Triangulation;
 use crate::graph::UnionFind;
 use crate::proximity::sigdt::TIE_SLACK;
 
-/// The largest accepted ratio of a join to the longest edge of the chains it joins.
+/// The largest accepted ratio of a join to the longest edge of the chains it joins: the
+/// `u < 2` of \[MOW22\] Theorem 1. SIG-AUTO always uses it; other values exist only for
+/// studying the bound (`examples/join_ratio_sweep.rs`, `docs/sig-auto.md`).
 pub const JOIN_RATIO: f64 = 2.0;
 
 /// Open chains over the vertices of a triangulation, and the joins made between them.
@@ -41,11 +43,13 @@ pub struct Chains<'a> {
     /// Per chain: its number of vertices and its longest tree edge.
     size: Vec<usize>,
     longest: Vec<f64>,
+    /// The join bound's ratio ([`JOIN_RATIO`] in SIG-AUTO).
+    ratio: f64,
 }
 
 impl<'a> Chains<'a> {
-    /// No chains yet.
-    pub fn new(dt: &'a Triangulation) -> Chains<'a> {
+    /// No chains yet; joins will be bounded by `ratio` times the longest edge.
+    pub fn new(dt: &'a Triangulation, ratio: f64) -> Chains<'a> {
         let n = dt.num_vertices();
         Chains {
             dt,
@@ -53,6 +57,7 @@ impl<'a> Chains<'a> {
             degree: vec![0; n],
             size: Vec::new(),
             longest: Vec::new(),
+            ratio,
         }
     }
 
@@ -106,7 +111,7 @@ impl<'a> Chains<'a> {
                 continue;
             }
             let (ca, cb) = (self.chain_of[a as usize], self.chain_of[b as usize]);
-            let bound = JOIN_RATIO * self.longest[ca as usize].max(self.longest[cb as usize]);
+            let bound = self.ratio * self.longest[ca as usize].max(self.longest[cb as usize]);
             if len > bound * (1.0 + TIE_SLACK) {
                 continue;
             }

@@ -7,7 +7,6 @@
 //!
 //! # Complexity
 //! O(k log k) for a component of `k` points.
-use super::chain_join::JOIN_RATIO;
 use super::inflate_sculpt::inflate_and_sculpt;
 use super::result::{Reconstruction, Stats, Status};
 use crate::delaunay::{Shape, Triangulation};
@@ -27,19 +26,21 @@ pub struct ClosedComponent {
 }
 
 /// Inflates and sculpts the component with vertices `vertices` (of `dt`) and edges `graph`
-/// restricted to it. `None` when a loop edge is not an edge of `dt` (it could cross another
-/// component) or the component's points are collinear.
+/// restricted to it, cutting a loop open at its longest link when that is more than
+/// `join_ratio` times the second longest. `None` when a loop edge is not an edge of `dt`
+/// (it could cross another component) or the component's points are collinear.
 pub fn closed_component(
     dt: &Triangulation,
     graph: &EdgeMask,
     vertices: &[u32],
+    join_ratio: f64,
 ) -> Option<ClosedComponent> {
     if vertices.len() == dt.num_vertices() {
         // One component holding every point: its triangulation is `dt` itself, so its loop
         // edges are edges of `dt` and need no check.
         let rec = inflate_and_sculpt(dt, graph, 0);
         let vertex_of = vertex_numbers(dt);
-        return from_loops(dt, &rec, |i| vertex_of[i], false);
+        return from_loops(dt, &rec, |i| vertex_of[i], false, join_ratio);
     }
     let points: Vec<_> = vertices.iter().map(|&v| dt.point(v)).collect();
     let sub = Triangulation::new(&points).ok()?;
@@ -65,7 +66,7 @@ pub fn closed_component(
         }
     }
     let rec = inflate_and_sculpt(&sub, &mask, 0);
-    from_loops(dt, &rec, |i| vertices[i], true)
+    from_loops(dt, &rec, |i| vertices[i], true, join_ratio)
 }
 
 /// Every input index's vertex of `dt` (duplicates map to their representative's).
@@ -84,6 +85,7 @@ fn from_loops(
     rec: &Reconstruction,
     vertex: impl Fn(usize) -> u32,
     check_edges: bool,
+    join_ratio: f64,
 ) -> Option<ClosedComponent> {
     let mut edges = Vec::with_capacity(rec.edges.len());
     for cycle in &rec.loops {
@@ -93,7 +95,7 @@ fn from_loops(
             let [p, q] = link(a);
             crate::geometry::distance(dt.point(p), dt.point(q))
         };
-        let open_at = opening_edge(k, length);
+        let open_at = opening_edge(k, length, join_ratio);
         for a in (0..k).filter(|&a| Some(a) != open_at) {
             let [p, q] = link(a);
             if check_edges && !dt.has_edge(p, q) {
@@ -110,10 +112,10 @@ fn from_loops(
 }
 
 /// The link of a loop of `k` links to cut open: the longest, when it is more than
-/// [`JOIN_RATIO`] times the second longest (the chain rule of
+/// `ratio` ([`JOIN_RATIO`](super::chain_join::JOIN_RATIO) in SIG-AUTO) times the second longest (the chain rule of
 /// [`chain_join`](super::chain_join) read backwards: the rest of the loop is a chain that
 /// this link would not be allowed to close).
-fn opening_edge(k: usize, length: impl Fn(usize) -> f64) -> Option<usize> {
+fn opening_edge(k: usize, length: impl Fn(usize) -> f64, ratio: f64) -> Option<usize> {
     let (mut first, mut second) = ((0, f64::NEG_INFINITY), f64::NEG_INFINITY);
     for a in 0..k {
         let l = length(a);
@@ -124,5 +126,5 @@ fn opening_edge(k: usize, length: impl Fn(usize) -> f64) -> Option<usize> {
             second = l;
         }
     }
-    (first.1 > JOIN_RATIO * second * (1.0 + TIE_SLACK)).then_some(first.0)
+    (first.1 > ratio * second * (1.0 + TIE_SLACK)).then_some(first.0)
 }

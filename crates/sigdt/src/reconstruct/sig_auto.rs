@@ -52,6 +52,14 @@ use crate::proximity::sigdt::TIE_SLACK;
 
 /// Reconstructs `dt`'s points with SIG-AUTO (see the module docs).
 pub fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
+    sig_auto_with_join_ratio(dt, JOIN_RATIO)
+}
+
+/// SIG-AUTO with another ratio in place of [`JOIN_RATIO`] in all three places it bounds a
+/// gap: chain joins, loop cutting and the leaf-edge check. Not a user parameter: it exists
+/// so that the choice of the bound can be measured (`examples/join_ratio_sweep.rs`).
+#[doc(hidden)]
+pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstruction {
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
@@ -64,7 +72,7 @@ pub fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
     };
     let mut pairs: Vec<[u32; 2]> = Vec::new();
     let mut left_out: Vec<usize> = Vec::new();
-    let mut chains = Chains::new(dt);
+    let mut chains = Chains::new(dt, join_ratio);
     for (vertices, branched) in forests.components() {
         if !branched {
             let path = tree.walk(&vertices);
@@ -72,10 +80,10 @@ pub fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
             chains.add(&path);
             continue;
         }
-        let Some(closed) = closed_component(dt, graph, &vertices) else {
+        let Some(closed) = closed_component(dt, graph, &vertices, join_ratio) else {
             return sig_connect2d_on(dt, true);
         };
-        let bound = JOIN_RATIO * sigdt.longest_edge(dt, &vertices) * (1.0 + TIE_SLACK);
+        let bound = join_ratio * sigdt.longest_edge(dt, &vertices) * (1.0 + TIE_SLACK);
         let within = |&[a, b]: &[u32; 2]| distance(dt.point(a), dt.point(b)) <= bound;
         if !closed.edges.iter().all(within) {
             if let Some(paths) = sigdt.pieces_as_paths(dt, &vertices) {
@@ -168,6 +176,25 @@ mod tests {
             assert_eq!(rec.loops.len() == 1, closed, "{slots} slots: {:?}", rec.status);
             assert_eq!(rec.paths.len() == 1, !closed, "{slots} slots");
         }
+    }
+
+    #[test]
+    fn the_join_ratio_moves_the_bound() {
+        // The 3s gap of 30 samples on 32 slots closes only once the ratio exceeds 3; the 2s
+        // gap on 31 slots needs more than 2. `sig_auto_on` is the ratio 2.
+        let sample =
+            |slots| -> Vec<Point> { circle(slots, 1.0, [0.0, 0.0]).into_iter().take(30).collect() };
+        for (slots, ratio, closed) in
+            [(32, 3.5, true), (32, 2.5, false), (31, 2.0, true), (31, 1.5, false)]
+        {
+            let points = sample(slots);
+            let dt = Triangulation::new(&points).unwrap();
+            let rec = sig_auto_with_join_ratio(&dt, ratio);
+            check_reconstruction(&points, &rec).unwrap();
+            assert_eq!(rec.loops.len() == 1, closed, "{slots} slots, ratio {ratio}");
+        }
+        let dt = Triangulation::new(&sample(31)).unwrap();
+        assert_eq!(sig_auto_on(&dt), sig_auto_with_join_ratio(&dt, JOIN_RATIO));
     }
 
     #[test]

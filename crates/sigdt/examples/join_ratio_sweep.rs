@@ -1,0 +1,101 @@
+//! How SIG-AUTO's exact-reconstruction counts change with the ratio of its join bound.
+//!
+//! ```text
+//! cargo run --release -p sigdt --example join_ratio_sweep [-- DATA_DIR] [--ratios 1.5,2,3] [--list CATEGORY]
+//! ```
+//!
+//! SIG-AUTO closes a gap only when it is at most [`JOIN_RATIO`] (2, the `u < 2` of the
+//! paper's Theorem 1) times the longest sample spacing next to it; the same ratio decides
+//! where a loop is cut open. This example replaces that ratio (in all three places, through
+//! `sig_auto_with_join_ratio`) and counts exact reconstructions per category of the
+//! labelled folder `DATA_DIR` (default `/work/shared/data/curves`: `index.csv`, `NAME.xy`,
+//! `NAME.gt`), plus a `manifold eps<1` row. A smaller ratio keeps more open curves open and
+//! closes fewer closed ones; the table shows how much of each a ratio buys. With
+//! `--list CATEGORY`, the cases of that category that no ratio reconstructs go to stderr.
+use sigdt::eval::is_exact;
+use sigdt::io::{read_edges, read_points};
+use sigdt::reconstruct::chain_join::JOIN_RATIO;
+use sigdt::reconstruct::sig_auto::sig_auto_with_join_ratio;
+use sigdt::Triangulation;
+use std::collections::BTreeMap;
+use std::error::Error;
+use std::path::PathBuf;
+
+const DEFAULT_RATIOS: [f64; 9] = [1.25, 1.5, 1.75, 1.9, 2.0, 2.25, 2.5, 3.0, 3.5];
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut dir = PathBuf::from("/work/shared/data/curves");
+    let mut ratios = DEFAULT_RATIOS.to_vec();
+    let mut list: Option<String> = None;
+    let mut k = 0;
+    while k < args.len() {
+        match args[k].as_str() {
+            "--ratios" => {
+                let text = args.get(k + 1).ok_or("--ratios needs a list such as 1.5,2,3")?;
+                ratios = text.split(',').map(str::parse).collect::<Result<_, _>>()?;
+                if ratios.iter().any(|r: &f64| !(r.is_finite() && *r > 0.0)) {
+                    return Err(
+                        format!("--ratios: every ratio must be positive, got {text}").into()
+                    );
+                }
+                k += 2;
+            }
+            "--list" => {
+                list = Some(args.get(k + 1).ok_or("--list needs a category")?.clone());
+                k += 2;
+            }
+            other => {
+                dir = PathBuf::from(other);
+                k += 1;
+            }
+        }
+    }
+    let index = std::fs::read_to_string(dir.join("index.csv"))
+        .map_err(|e| format!("{}: {e}", dir.join("index.csv").display()))?;
+    let mut rows = index.lines();
+    let header: Vec<&str> = rows.next().ok_or("empty index.csv")?.split(',').collect();
+    let col = |name: &str| {
+        header.iter().position(|&h| h == name).ok_or(format!("index.csv has no {name} column"))
+    };
+    let (c_name, c_cat, c_eps) = (col("name")?, col("category")?, col("epsilon")?);
+    // Per row label: cases, exact count per ratio.
+    let mut tally: BTreeMap<String, (usize, Vec<usize>)> = BTreeMap::new();
+    for row in rows.filter(|r| !r.trim().is_empty()) {
+        let f: Vec<&str> = row.split(',').collect();
+        let (name, category) = (f[c_name], f[c_cat]);
+        let eps: f64 = f[c_eps].parse().unwrap_or(f64::INFINITY);
+        let points = read_points(&dir.join(format!("{name}.xy")))?;
+        let truth = read_edges(&dir.join(format!("{name}.gt")))?;
+        let dt = Triangulation::new(&points)?;
+        let exact: Vec<bool> = ratios
+            .iter()
+            .map(|&r| is_exact(&sig_auto_with_join_ratio(&dt, r).edges, &truth))
+            .collect();
+        let mut labels = vec![category.to_string()];
+        if category == "manifold" && eps < 1.0 {
+            labels.push("manifold eps<1".to_string());
+        }
+        for label in labels {
+            let entry = tally.entry(label).or_insert_with(|| (0, vec![0; ratios.len()]));
+            entry.0 += 1;
+            for (count, &ok) in entry.1.iter_mut().zip(&exact) {
+                *count += usize::from(ok);
+            }
+        }
+        if list.as_deref() == Some(category) && !exact.contains(&true) {
+            eprintln!("no ratio: {name} (n = {}, eps = {eps})", points.len());
+        }
+    }
+    let marks: Vec<String> = ratios
+        .iter()
+        .map(|&r| if r == JOIN_RATIO { format!("**{r}**") } else { r.to_string() })
+        .collect();
+    println!("| category | cases | {} |", marks.join(" | "));
+    println!("|---|--:|{}", "--:|".repeat(ratios.len()));
+    for (label, (cases, exact)) in &tally {
+        let cells: Vec<String> = exact.iter().map(|e| e.to_string()).collect();
+        println!("| {label} | {cases} | {} |", cells.join(" | "));
+    }
+    Ok(())
+}
