@@ -25,7 +25,7 @@ const FLOORS_SIG_AUTO: &[(&str, usize)] = &[
     ("manifold", 105),
     ("manifold eps<1", 81),
     ("sharp", 72),
-    ("open", 54),
+    ("open", 55),
     ("multiple", 36),
     ("noisy", 39),
     ("bezier", 100),
