@@ -115,13 +115,14 @@ pictures: build py-build
 	  -o docs/images/steps-inflated.svg
 	$(VPY) python/bench/steps_figure.py data/inputs/glyph_e_reversed.xy docs/images/steps.png
 	mkdir -p docs/images/sig-auto
-	for c in glyph_DejaVuSans_U0042 svgopen_Croco_path31_0_243 svg_manif_f5_path5_0_593; do \
+	for c in glyph_DejaVuSans_U0042 svgopen_Croco_path31_0_243 svg_manif_f5_path5_0_593 \
+	  glyphopen_DejaVuSerifCondensed-BoldItalic_U006E; do \
 	  for m in sig-connect2d sig-auto; do \
 	    $(SIGDT) render $(DATA)/$$c.xy --gt $(DATA)/$$c.gt --method $$m --width 420 \
 	      -o docs/images/sig-auto/$$c.$$m.svg; \
 	  done; \
 	done
-	for c in glyphopen_DejaVuSerifCondensed-BoldItalic_U006E glyph_DejaVuSans_U004F \
+	for c in glyphopen_DejaVuSansMono-Bold_U03C0 glyph_DejaVuSans_U004F \
 	  glyph_DejaVuSansCondensed_U0050_c0; do \
 	  $(SIGDT) render $(DATA)/$$c.xy --gt $(DATA)/$$c.gt --method sig-auto --width 420 \
 	    -o docs/images/sig-auto/$$c.sig-auto.svg; \

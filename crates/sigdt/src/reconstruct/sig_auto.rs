@@ -17,7 +17,7 @@
 //!    edge when that edge is more than twice the second longest. If some loop edge is more
 //!    than twice the longest edge of the component's SIGDT spanning forest (a leaf edge
 //!    reaching across), the component's SIGDT pieces are used as chains instead, when each
-//!    is a path with at most one-point spurs ([`spur_path`](super::spur_path)).
+//!    is a path with branches of at most four samples ([`spur_path`](super::spur_path)).
 //!
 //! # Guarantees
 //! - The output is always a set of vertex-disjoint simple loops and simple open paths made
@@ -28,7 +28,8 @@
 //! - An open curve whose two end samples are more than twice the longest sample spacing
 //!   apart is never closed by a join; when its SIGDT2 component's spanning tree is the
 //!   sample path (dense sampling), it comes back as that path. A component that must be
-//!   inflated (its tree branches beyond one-point spurs) can still come back closed.
+//!   inflated (its tree branches beyond what small branches explain) can still come back
+//!   closed.
 //! - Separate curves whose SIGDT2 components are separate (each curve sampled more densely
 //!   than the gap between them) are reconstructed independently, nested or not.
 //! - When the fallback applies (a loop of a component's own triangulation that is not a

@@ -137,8 +137,8 @@ impl Tree {
     }
 
     /// The trees of this forest that hold `vertices` (which must be unions of whole trees),
-    /// each as a path (walked, or with its spurs put in), or `None` if some tree is not a
-    /// path with one-point spurs.
+    /// each as a path (walked, or with its small branches threaded in), or `None` if some
+    /// tree is not a path with small branches ([`path_with_spurs`]).
     pub fn pieces_as_paths(&self, dt: &Triangulation, vertices: &[u32]) -> Option<Vec<Vec<u32>>> {
         let tree = self;
         let mut seen: std::collections::HashSet<u32> = Default::default();
