@@ -33,7 +33,12 @@ fn main() -> Result<(), Box<dyn Error>> {
         match args[k].as_str() {
             "--ratios" => {
                 let text = args.get(k + 1).ok_or("--ratios needs a list such as 1.5,2,3")?;
-                ratios = text.split(',').map(str::parse).collect::<Result<_, _>>()?;
+                ratios = text
+                    .split(',')
+                    .map(|r| {
+                        r.trim().parse().map_err(|_| format!("--ratios: {r:?} is not a number"))
+                    })
+                    .collect::<Result<_, _>>()?;
                 if ratios.iter().any(|r: &f64| !(r.is_finite() && *r > 0.0)) {
                     return Err(
                         format!("--ratios: every ratio must be positive, got {text}").into()
