@@ -1,7 +1,8 @@
 //! How SIG-AUTO's exact-reconstruction counts change with the ratio of its join bound.
 //!
 //! ```text
-//! cargo run --release -p sigdt --example join_ratio_sweep [-- DATA_DIR] [--ratios 1.5,2,3] [--list CATEGORY]
+//! cargo run --release -p sigdt --example join_ratio_sweep \
+//!     [-- DATA_DIR] [--ratios 1.5,2,3] [--list CATEGORY]
 //! ```
 //!
 //! SIG-AUTO closes a gap only when it is at most [`JOIN_RATIO`] (2, the `u < 2` of the
@@ -66,10 +67,13 @@ fn main() -> Result<(), Box<dyn Error>> {
     let (c_name, c_cat, c_eps) = (col("name")?, col("category")?, col("epsilon")?);
     // Per row label: cases, exact count per ratio.
     let mut tally: BTreeMap<String, (usize, Vec<usize>)> = BTreeMap::new();
-    for row in rows.filter(|r| !r.trim().is_empty()) {
+    for (line, row) in rows.enumerate().filter(|(_, r)| !r.trim().is_empty()) {
         let f: Vec<&str> = row.split(',').collect();
-        let (name, category) = (f[c_name], f[c_cat]);
-        let eps: f64 = f[c_eps].parse().unwrap_or(f64::INFINITY);
+        let field = |c: usize| {
+            f.get(c).copied().ok_or(format!("index.csv line {}: too few fields", line + 2))
+        };
+        let (name, category) = (field(c_name)?, field(c_cat)?);
+        let eps: f64 = field(c_eps)?.parse().unwrap_or(f64::INFINITY);
         let points = read_points(&dir.join(format!("{name}.xy")))?;
         let truth = read_edges(&dir.join(format!("{name}.gt")))?;
         let dt = Triangulation::new(&points)?;

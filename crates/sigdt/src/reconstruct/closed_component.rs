@@ -111,10 +111,10 @@ fn from_loops(
     Some(ClosedComponent { edges, left_out, stats: rec.stats })
 }
 
-/// The link of a loop of `k` links to cut open: the longest, when it is more than
-/// `ratio` ([`JOIN_RATIO`](super::chain_join::JOIN_RATIO) in SIG-AUTO) times the second longest (the chain rule of
-/// [`chain_join`](super::chain_join) read backwards: the rest of the loop is a chain that
-/// this link would not be allowed to close).
+/// The link of a loop of `k` links to cut open: the longest, when it is more than `ratio`
+/// ([`JOIN_RATIO`](super::chain_join::JOIN_RATIO) in SIG-AUTO) times the second longest
+/// (the chain rule of [`chain_join`](super::chain_join) read backwards: the rest of the loop
+/// is a chain that this link would not be allowed to close).
 fn opening_edge(k: usize, length: impl Fn(usize) -> f64, ratio: f64) -> Option<usize> {
     let (mut first, mut second) = ((0, f64::NEG_INFINITY), f64::NEG_INFINITY);
     for a in 0..k {
