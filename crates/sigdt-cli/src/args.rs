@@ -5,10 +5,10 @@
 
 use std::path::PathBuf;
 
+use crate::format::OutputFormat;
 use clap::builder::{PossibleValuesParser, RangedU64ValueParser, TypedValueParser};
 use clap::error::ErrorKind;
 use clap::{Args, CommandFactory, Parser, Subcommand};
-use sigdt::io::OutputFormat;
 use sigdt::Method;
 
 use crate::args_bench::method_parser;

@@ -3,8 +3,9 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Result};
-use sigdt::curves::{self, BezierPath, Sample};
+use sigdt::samplers::{self, Sample};
 use sigdt::{Edge, Point};
+use sigdt_lab::curves::{self, BezierPath};
 
 use crate::args_generate::{PerturbArgs, SampleArgs};
 use crate::output::Output;
@@ -33,10 +34,10 @@ pub fn perturb(args: &PerturbArgs) -> Result<()> {
     let output = Output::new(args.output.as_deref(), &args.input)?;
     let mut points = crate::run::read_input(&args.input)?;
     if let Some(s) = args.noise {
-        points = curves::uniform_noise(&points, s, args.seed)?;
+        points = samplers::uniform_noise(&points, s, args.seed)?;
     }
     if let Some(q) = args.outliers {
-        points = curves::add_outliers(&points, q, args.seed.wrapping_add(1))?;
+        points = samplers::add_outliers(&points, q, args.seed.wrapping_add(1))?;
     }
     output.write(|w| w.write_all(points_text(&points).as_bytes()))
 }
@@ -63,7 +64,7 @@ pub fn eps_sample(
     let clean = framed.sample;
     let noisy = match lfs_noise {
         Some(delta) => {
-            Some(curves::lfs_noise(&clean.points, &framed.normals, &framed.lfs, delta, seed)?)
+            Some(samplers::lfs_noise(&clean.points, &framed.normals, &framed.lfs, delta, seed)?)
         }
         None => None,
     };

@@ -9,6 +9,7 @@ mod args_bench;
 mod args_generate;
 mod args_view;
 mod bench;
+mod format;
 mod generate;
 mod output;
 mod picture;

@@ -4,8 +4,8 @@
 use std::path::Path;
 
 use anyhow::{bail, Result};
-use sigdt::render::{render_svg, Layers, RenderOptions};
 use sigdt::{Edge, GraphKind, Options, Point};
+use sigdt_lab::render::{render_svg, Layers, RenderOptions};
 
 use crate::args_view::{Layer, RenderArgs, ViewArgs};
 use crate::output::Output;
@@ -116,8 +116,8 @@ pub fn view(args: &ViewArgs) -> Result<()> {
     output.write(|w| w.write_all(html.as_bytes()))
 }
 
-fn phase_code(phase: sigdt::reconstruct::trace::Phase) -> char {
-    use sigdt::reconstruct::trace::Phase;
+fn phase_code(phase: sigdt::Phase) -> char {
+    use sigdt::Phase;
     match phase {
         Phase::Inflate => 'i',
         Phase::Pocket => 'p',

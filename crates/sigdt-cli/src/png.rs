@@ -38,7 +38,7 @@ pub fn svg_to_png(svg: &str) -> anyhow::Result<Vec<u8>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use sigdt::render::{render_svg, Layers, RenderOptions};
+    use sigdt_lab::render::{render_svg, Layers, RenderOptions};
 
     #[test]
     fn a_square_renders_to_a_png_that_is_not_blank() {

@@ -5,8 +5,8 @@ use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
+use crate::format::OutputFormat;
 use anyhow::Result;
-use sigdt::io::OutputFormat;
 use sigdt::{GraphKind, Options, Point, Reconstruction, Status};
 
 use crate::args::{Cli, Command, GraphArgs, ReconstructArgs};
@@ -49,7 +49,7 @@ fn reconstruct(args: &ReconstructArgs) -> Result<()> {
     let format = args
         .format
         .or_else(|| args.output.as_deref().and_then(OutputFormat::from_path))
-        .unwrap_or(OutputFormat::Edges);
+        .unwrap_or_default();
     let points = read_input(&args.input)?;
     let options = Options { method: args.method, leaf_elimination: !args.no_leaf_elimination };
     let start = Instant::now();
@@ -60,7 +60,7 @@ fn reconstruct(args: &ReconstructArgs) -> Result<()> {
     } else if let Status::SculptingStuck { .. } = rec.status {
         note(&format!("sigdt: warning: {}", rec.status));
     }
-    output.write(|w| sigdt::io::write_reconstruction(w, format, &points, &rec))
+    output.write(|w| format.write(w, &points, &rec))
 }
 
 /// `sigdt graph`.

@@ -11,7 +11,7 @@ use std::path::Path;
 use std::time::Duration;
 
 use anyhow::{bail, Context, Result};
-use sigdt::curves;
+use sigdt_lab::curves;
 
 use crate::args_bench::methods;
 use crate::args_generate::{SweepArgs, SweepKind};
@@ -120,10 +120,10 @@ fn generate(args: &SweepArgs, level: f64, k: u64) -> Result<Vec<(String, Labelle
                 let clean = sigdt::io::read_points(&xy)?;
                 let gt = sigdt::io::read_edges(&gt)?;
                 let labelled = if args.kind == SweepKind::Noise {
-                    let points = curves::uniform_noise(&clean, level, seed(i))?;
+                    let points = sigdt::samplers::uniform_noise(&clean, level, seed(i))?;
                     Labelled { points, gt, truth: Some(clean) }
                 } else {
-                    let points = curves::add_outliers(&clean, level, seed(i))?;
+                    let points = sigdt::samplers::add_outliers(&clean, level, seed(i))?;
                     Labelled { points, gt, truth: None }
                 };
                 sets.push((case.name.clone(), labelled));

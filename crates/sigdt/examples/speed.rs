@@ -29,7 +29,7 @@
 //! Memory: exact heap bytes, counted by a pass-through `#[global_allocator]`: the peak
 //! during one `reconstruct` call minus what was allocated just before it (the result
 //! returned by the call is included).
-use sigdt::curves::{random_closed_curve, spiral_band, Sample};
+use sigdt::samplers::{random_closed_curve, spiral_band, Sample};
 use sigdt::{Options, Point, Triangulation};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::error::Error;

@@ -1,15 +1,16 @@
 //! Per-stage timing: `cargo run --release -p sigdt --example stages -- N REPS` times each stage
 //! of SIG-CONNECT2D on the
 //! spiral band (median over REPS).
-use sigdt::proximity::{leaf_elimination::eliminate_leaves, sigdt::sigdt_mask};
-use sigdt::reconstruct::{boundary::Boundary, extract, inflate::inflate, sculpt::sculpt};
+use sigdt::internals::{
+    eliminate_leaves, inflate, loop_edges, loops, sculpt, sigdt_mask, Boundary,
+};
 use std::time::Instant;
 
 fn main() {
     let mut args = std::env::args().skip(1);
     let n: usize = args.next().and_then(|s| s.parse().ok()).unwrap_or(100_000);
     let reps: usize = args.next().and_then(|s| s.parse().ok()).unwrap_or(20);
-    let s = sigdt::curves::spiral_band(n).shuffled(7);
+    let s = sigdt::samplers::spiral_band(n).shuffled(7);
     let mut times = vec![Vec::new(); 6];
     for _ in 0..reps {
         let mut t = Instant::now();
@@ -28,9 +29,9 @@ fn main() {
         inflate(&mut bd, &g, &mut stats);
         sculpt(&mut bd, &mut stats);
         lap(3, &mut times);
-        let loops = extract::loops(&bd);
+        let loops = loops(&bd);
         lap(4, &mut times);
-        let e = extract::loop_edges(&loops, n);
+        let e = loop_edges(&loops, n);
         lap(5, &mut times);
         std::hint::black_box(e);
     }

@@ -13,32 +13,45 @@
 //! assert!(rec.status.is_manifold());
 //! ```
 //!
-//! Module graph: `geometry ← delaunay ← proximity ← reconstruct`, with `io` and `curves`
-//! beside them.
+//! Everything a user calls is re-exported here; the modules below document the algorithms
+//! (with their papers, guarantees and complexity) and hold the readers, writers and
+//! samplers. The main path runs one way: points → [`delaunay`] → [`proximity`] (SIGDT) →
+//! [`connect`] (inflate, sculpt, loops) → [`result`] → [`io`] writers.
+//!
+//! Evaluation metrics, the research samplers and pictures are in the `sigdt-lab` crate.
 
 #![forbid(unsafe_code)]
 
 pub mod baselines;
-pub mod curves;
+pub mod connect;
 pub mod delaunay;
-pub mod error;
-pub mod eval;
-pub mod geometry;
-pub mod graph;
+mod error;
+mod geometry;
+mod graph;
+#[doc(hidden)]
+pub mod internals;
 pub mod io;
+mod method;
 pub mod proximity;
-pub mod reconstruct;
-pub mod render;
-pub mod testing;
+pub mod result;
+pub mod samplers;
+pub mod sig_auto;
+pub mod sig_connect2d;
 
+pub use connect::trace::{Phase, Step, Trace};
 pub use delaunay::Triangulation;
 pub use error::{Error, Result};
 pub use geometry::Point;
-pub use proximity::{proximity_graph, GraphKind};
-pub use reconstruct::{
-    reconstruct, reconstruct_traced, Method, Options, Phase, Reconstruction, Stats, Status, Step,
-    Trace,
+pub use method::{
+    reconstruct, reconstruct_on, reconstruct_traced, reconstruct_traced_on, Method, Options,
 };
+pub use proximity::{nearest_neighbour_distances, proximity_graph, proximity_graph_on, GraphKind};
+pub use result::{Polygon, Reconstruction, Stats, Status};
 
 /// An undirected edge `[i, j]` between input point indices, `i < j`.
 pub type Edge = [usize; 2];
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+pub struct ReadmeDoctests;

@@ -1,11 +1,9 @@
 //! Each step of SIG-CONNECT2D on small hand-made configurations, with exact expectations,
 //! including the paper's Figure 6 (inflating a pinched vertex) and Figure 7 (sculpting an
 //! isolated interior vertex).
-use sigdt::delaunay::Triangulation;
-use sigdt::graph::EdgeMask;
-use sigdt::reconstruct::boundary::{Boundary, VertexClass};
-use sigdt::reconstruct::{inflate::inflate, sculpt::sculpt};
-use sigdt::testing::check_reconstruction;
+use sigdt::internals::check_reconstruction;
+use sigdt::internals::{inflate, sculpt, Boundary, EdgeMask, VertexClass};
+use sigdt::Triangulation;
 use sigdt::{reconstruct, Options, Point, Stats, Status};
 
 /// The edge mask of the given input-index pairs (each must be a Delaunay edge).
@@ -126,7 +124,7 @@ fn figure_7_sculpting_exposes_the_centre() {
     pts.push([0.0, 0.0]);
     let dt = Triangulation::new(&pts).unwrap();
     // SIGDT here is the fan: 12 sides and 12 spokes (see proximity::sigdt tests).
-    let g = sigdt::proximity::sigdt::sigdt_mask(&dt);
+    let g = sigdt::internals::sigdt_mask(&dt);
     let mut bd = Boundary::from_graph(&dt, &g);
     assert_eq!(class_of(&bd, &dt, 12), VertexClass::Interior);
     let mut stats = Stats::default();

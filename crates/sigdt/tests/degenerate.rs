@@ -11,8 +11,8 @@
 //! the same shapes, so `cargo test` stays quick. Each run prints one line
 //! `case | n | method | status | edges | loops | paths | ms` (see with `--nocapture`).
 //! The 10⁷-point run is `#[ignore]`d: `cargo test --release --test degenerate -- --ignored`.
-use sigdt::curves::{cycle_edges, random_closed_curve, Rng, Sample};
-use sigdt::testing::check_reconstruction;
+use sigdt::internals::check_reconstruction;
+use sigdt::samplers::{cycle_edges, random_closed_curve, Rng, Sample};
 use sigdt::{reconstruct, Edge, Error, Method, Options, Point, Reconstruction, Status};
 use std::time::Instant;
 

@@ -1,7 +1,7 @@
 //! Determinism: the same input gives the same result, bit for bit, on every run and
 //! whichever thread computes it. Inputs include exact ties (a grid, exactly cocircular
 //! points, duplicates), where the answer depends only on tie-breaking by index.
-use sigdt::curves::{random_closed_curve, spiral_band, Rng};
+use sigdt::samplers::{random_closed_curve, spiral_band, Rng};
 use sigdt::{reconstruct, Method, Options, Point, Reconstruction};
 
 /// Smaller inputs in debug builds, to keep `cargo test` quick.

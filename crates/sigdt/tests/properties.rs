@@ -8,8 +8,8 @@
 //! `PROPTEST_RNG_SEED=123 PROPTEST_CASES=2000 cargo test --release --test properties`.
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
-use sigdt::curves::{Blob, Modulation, Rng, Sample};
-use sigdt::testing::check_reconstruction;
+use sigdt::internals::check_reconstruction;
+use sigdt::samplers::{Blob, Modulation, Rng, Sample};
 use sigdt::{proximity_graph, reconstruct, Edge, GraphKind, Method, Options, Point, Status};
 
 /// A random blob sampled densely: spacing at most 0.3 of the blob's guaranteed curvature

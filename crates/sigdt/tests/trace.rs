@@ -1,13 +1,12 @@
 //! The step trace of inflating and sculpting: its replay ends at the result, inflating ends
 //! with a manifold boundary, the steps match the statistics, and tracing changes nothing.
-use sigdt::curves::{
+use sigdt::internals::{bc0, inflate, initial_graph, sculpt, Boundary};
+use sigdt::samplers::{
     add_outliers, random_closed_curve, regular_polygon, spiral_band, uniform_noise, Blob,
     Modulation, Rng,
 };
-use sigdt::reconstruct::boundary::Boundary;
-use sigdt::reconstruct::{inflate::inflate, sculpt::sculpt, sig_connect2d::initial_graph};
-use sigdt::{baselines::connect2d::bc0, Edge, Stats, Trace, Triangulation};
 use sigdt::{reconstruct, reconstruct_traced, Method, Options, Phase, Point, Reconstruction};
+use sigdt::{Edge, Stats, Trace, Triangulation};
 
 fn circle(k: usize, centre: Point, r: f64) -> Vec<Point> {
     (0..k)
@@ -107,8 +106,7 @@ fn replay_matches_the_live_boundary_at_the_start_after_inflating_and_at_the_end(
         let dt = Triangulation::new(&points).unwrap();
         for (graph, _) in [initial_graph(&dt, true), initial_graph(&dt, false), bc0(&dt)] {
             let mut bd = Boundary::from_graph(&dt, &graph);
-            let mut trace = Trace::start(&bd, &graph);
-            bd.trace = Some(Vec::new());
+            let mut trace = bd.start_trace(&graph);
             assert_eq!(trace.boundary_at(0), bd.edges.edges(&dt), "{name}: start");
             let mut stats = Stats::default();
             inflate(&mut bd, &graph, &mut stats);

@@ -101,8 +101,8 @@ pub fn evaluate(args: &EvalArgs) -> Result<()> {
             (args.method.to_string(), sigdt::reconstruct(&points, &options)?.edges)
         }
     };
-    let m = sigdt::eval::evaluate(&points, &edges, &gt)?;
-    let epsilon = sigdt::eval::graph_epsilon(&points, &gt)?;
+    let m = sigdt_lab::eval::evaluate(&points, &edges, &gt)?;
+    let epsilon = sigdt_lab::eval::graph_epsilon(&points, &gt)?;
     let opt = |v: Option<f64>| v.map_or("undefined".to_string(), |v| format!("{v:.6e}"));
     let mut lines = vec![
         format!("result:             {label}"),

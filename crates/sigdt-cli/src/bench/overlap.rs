@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use sigdt::eval::{self, Overlap};
+use sigdt_lab::eval::{self, Overlap};
 
 use super::dataset::case_files;
 use super::record::{Case, OverlapStat};

@@ -100,7 +100,7 @@ pub fn score(
     status: &str,
     time_ms: f64,
 ) -> Result<Run> {
-    let diff = sigdt::eval::edge_diff(edges, gt);
+    let diff = sigdt_lab::eval::edge_diff(edges, gt);
     // Against clean positions: one point array, the clean copies after the given ones.
     let (all, truth_edges): (std::borrow::Cow<'_, [Point]>, Vec<Edge>) = match clean {
         None => (points.into(), gt.to_vec()),
@@ -116,8 +116,8 @@ pub fn score(
             ([points, clean].concat().into(), gt.iter().map(|&[i, j]| [i + n, j + n]).collect())
         }
     };
-    let distances = sigdt::eval::distance_errors(&all, edges, &truth_edges)?;
-    let area = sigdt::eval::area_difference(&all, edges, &truth_edges)?;
+    let distances = sigdt_lab::eval::distance_errors(&all, edges, &truth_edges)?;
+    let area = sigdt_lab::eval::area_difference(&all, edges, &truth_edges)?;
     Ok(Run {
         exact: diff.missing.is_empty() && diff.extra.is_empty(),
         status: status.to_string(),

@@ -16,21 +16,14 @@
 //!
 //! [OM13]: https://doi.org/10.1111/cgf.12227
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
+use crate::connect::inflate_and_sculpt;
 use crate::delaunay::Triangulation;
 use crate::graph::EdgeMask;
 use crate::proximity::{emst::emst_mask, leaf_elimination::eliminate_leaves};
-use crate::reconstruct::degenerate::degenerate_result;
-use crate::reconstruct::inflate_sculpt::inflate_and_sculpt;
-use crate::{Point, Reconstruction, Result};
+use crate::result::{degenerate_result, Reconstruction};
 
-/// Reconstructs `points` with CONNECT2D.
-pub fn connect2d(points: &[Point]) -> Result<Reconstruction> {
-    let dt = Triangulation::new(points)?;
-    Ok(connect2d_on(&dt))
-}
-
-/// [`connect2d`] on an existing triangulation.
-pub fn connect2d_on(dt: &Triangulation) -> Reconstruction {
+/// CONNECT2D on a triangulation.
+pub(crate) fn connect2d_on(dt: &Triangulation) -> Reconstruction {
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
@@ -48,7 +41,12 @@ pub fn bc0(dt: &Triangulation) -> (EdgeMask, usize) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::testing::check_reconstruction;
+    use crate::internals::check_reconstruction;
+    use crate::Point;
+
+    fn connect2d(pts: &[Point]) -> Result<Reconstruction, crate::Error> {
+        Ok(connect2d_on(&Triangulation::new(pts)?))
+    }
 
     #[test]
     fn regular_polygon_is_reconstructed() {

@@ -149,8 +149,8 @@ fn second_nearest(dt: &Triangulation, v: u32) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curves::cycle_edges as cycle;
-    use crate::testing::filter_edges;
+    use crate::internals::filter_edges;
+    use crate::samplers::cycle_edges as cycle;
     use crate::Point;
 
     fn run(pts: &[Point]) -> Vec<crate::Edge> {
@@ -159,7 +159,7 @@ mod tests {
 
     #[test]
     fn regular_16_gon_is_its_cycle() {
-        let pts = crate::curves::regular_polygon(16, 1.0).points;
+        let pts = crate::samplers::regular_polygon(16, 1.0).points;
         assert_eq!(run(&pts), cycle(16));
     }
 

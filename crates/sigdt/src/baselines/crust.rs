@@ -159,9 +159,9 @@ fn range_scale(dt: &Triangulation, centres: &[Point]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curves::cycle_edges as cycle;
-    use crate::curves::regular_polygon;
-    use crate::testing::filter_edges;
+    use crate::internals::filter_edges;
+    use crate::samplers::cycle_edges as cycle;
+    use crate::samplers::regular_polygon;
     use crate::Edge;
 
     fn crust_edges(points: &[Point]) -> Vec<Edge> {

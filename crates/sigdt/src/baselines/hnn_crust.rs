@@ -135,9 +135,9 @@ fn nearest(dt: &Triangulation, tree: &KdTree, points: &[Point], p: u32, k: usize
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curves::cycle_edges as cycle;
-    use crate::curves::regular_polygon;
-    use crate::testing::filter_edges;
+    use crate::internals::filter_edges;
+    use crate::samplers::cycle_edges as cycle;
+    use crate::samplers::regular_polygon;
     use crate::Edge;
 
     fn hnn_crust_edges(points: &[Point]) -> Vec<Edge> {

@@ -1,9 +1,12 @@
-//! The reconstruction methods SIG-CONNECT2D is measured against, one module per paper.
+//! The methods SIG-CONNECT2D is measured against, one module per paper. CONNECT2D runs the
+//! shared engine from its own graph; the others are graph filters that return vertex pairs,
+//! read as loops and paths by the caller. Why GATHAN, CCRUST, LENZ and VICUR are not here:
+//! `docs/evaluation.md`.
 
-pub mod connect2d;
-pub mod crawl;
-pub mod crust;
-pub mod gathan;
-pub mod hnn_crust;
-pub mod nn_crust;
-pub mod peel;
+pub(crate) mod connect2d;
+pub(crate) mod crawl;
+pub(crate) mod crust;
+pub(crate) mod emst;
+pub(crate) mod hnn_crust;
+pub(crate) mod nn_crust;
+pub(crate) mod peel;

@@ -168,9 +168,9 @@ fn split(a: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::curves::cycle_edges as cycle;
-    use crate::curves::regular_polygon;
-    use crate::testing::filter_edges;
+    use crate::internals::filter_edges;
+    use crate::samplers::cycle_edges as cycle;
+    use crate::samplers::regular_polygon;
     use crate::Edge;
 
     fn nn_crust_edges(points: &[Point]) -> Vec<Edge> {

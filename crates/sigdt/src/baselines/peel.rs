@@ -119,7 +119,7 @@ mod tests {
 
     #[test]
     fn regular_16_gon_is_its_cycle() {
-        let gon = crate::curves::regular_polygon(16, 1.0);
+        let gon = crate::samplers::regular_polygon(16, 1.0);
         assert_eq!(run(&gon.points), gon.edges);
     }
 

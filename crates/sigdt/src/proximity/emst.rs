@@ -30,7 +30,7 @@ pub fn minimum_spanning_forest(dt: &Triangulation, keep: impl Fn(u32) -> bool) -
 
 /// The half-edges `edges` sorted by `(length, lower input index, higher input index)`, the
 /// order in which [`kruskal`] must see them.
-pub fn sorted_by_length(dt: &Triangulation, edges: impl Iterator<Item = u32>) -> Vec<u32> {
+pub(crate) fn sorted_by_length(dt: &Triangulation, edges: impl Iterator<Item = u32>) -> Vec<u32> {
     let mut keyed: Vec<(u64, u32, u32, u32)> = edges
         .map(|h| {
             let (a, b) = (dt.input_index(dt.origin(h)) as u32, dt.input_index(dt.dest(h)) as u32);
@@ -44,13 +44,13 @@ pub fn sorted_by_length(dt: &Triangulation, edges: impl Iterator<Item = u32>) ->
 
 /// Kruskal's algorithm over half-edges given in [`sorted_by_length`] order: the forest's
 /// half-edges, in that order.
-pub fn kruskal(dt: &Triangulation, sorted: impl IntoIterator<Item = u32>) -> Vec<u32> {
+pub(crate) fn kruskal(dt: &Triangulation, sorted: impl IntoIterator<Item = u32>) -> Vec<u32> {
     let mut uf = UnionFind::new(dt.num_vertices());
     sorted.into_iter().filter(|&h| uf.union(dt.origin(h), dt.dest(h))).collect()
 }
 
 /// Merges two lists in [`sorted_by_length`] order into one.
-pub fn merge_sorted(dt: &Triangulation, a: &[u32], b: &[u32]) -> Vec<u32> {
+pub(crate) fn merge_sorted(dt: &Triangulation, a: &[u32], b: &[u32]) -> Vec<u32> {
     let key = |h: u32| {
         let (x, y) = (dt.input_index(dt.origin(h)), dt.input_index(dt.dest(h)));
         (dt.length(h).to_bits(), x.min(y), x.max(y))
@@ -70,7 +70,7 @@ pub fn merge_sorted(dt: &Triangulation, a: &[u32], b: &[u32]) -> Vec<u32> {
 }
 
 /// The EMST as sorted input-index pairs (the path along the line for collinear input).
-pub fn emst(dt: &Triangulation) -> Vec<Edge> {
+pub(crate) fn emst(dt: &Triangulation) -> Vec<Edge> {
     match dt.shape() {
         Shape::Proper => emst_mask(dt).edges(dt),
         _ => dt.edges(),

@@ -12,7 +12,7 @@ use crate::geometry::Point;
 use crate::Edge;
 
 /// The kNN graph of the triangulation's distinct points as sorted input-index pairs.
-pub fn knn(dt: &Triangulation, k: usize) -> Vec<Edge> {
+pub(crate) fn knn(dt: &Triangulation, k: usize) -> Vec<Edge> {
     let points: Vec<Point> = (0..dt.num_vertices() as u32).map(|v| dt.point(v)).collect();
     let tree = KdTree::new(&points);
     let mut pairs = Vec::with_capacity(points.len() * k);

@@ -26,7 +26,7 @@ pub fn eliminate_leaves(dt: &Triangulation, graph: &mut EdgeMask) -> usize {
 }
 
 /// [`eliminate_leaves`] given the degree of every vertex in `graph`.
-pub fn eliminate_leaves_with_degrees(
+pub(crate) fn eliminate_leaves_with_degrees(
     dt: &Triangulation,
     graph: &mut EdgeMask,
     mut degree: Vec<u32>,

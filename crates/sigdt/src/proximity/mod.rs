@@ -1,12 +1,15 @@
-//! Proximity graphs on the input points: DT, SIG, SIGDT, SIGDT2, EMST and kNN.
+//! Proximity graphs on the input points: DT, SIG, SIGDT, SIGDT2, EMST and kNN, and the
+//! nearest-neighbour distances they are built from. One module per graph.
 
-pub mod emst;
-pub mod kdtree;
-pub mod knn;
-pub mod leaf_elimination;
-pub mod nearest;
-pub mod sig;
-pub mod sigdt;
+pub(crate) mod emst;
+pub(crate) mod kdtree;
+pub(crate) mod knn;
+pub(crate) mod leaf_elimination;
+pub(crate) mod nearest;
+pub(crate) mod sig;
+pub(crate) mod sigdt;
+
+pub use nearest::nearest_neighbour_distances;
 
 use crate::delaunay::{Shape, Triangulation};
 use crate::{Edge, Error, Point, Result};
@@ -80,11 +83,11 @@ impl fmt::Display for GraphKind {
 /// Exact duplicates get no edges (their lowest-index representative stands for them).
 pub fn proximity_graph(points: &[Point], kind: GraphKind) -> Result<Vec<Edge>> {
     let dt = Triangulation::new(points)?;
-    Ok(graph_of(&dt, kind))
+    Ok(proximity_graph_on(&dt, kind))
 }
 
 /// [`proximity_graph`] on an existing triangulation.
-pub fn graph_of(dt: &Triangulation, kind: GraphKind) -> Vec<Edge> {
+pub fn proximity_graph_on(dt: &Triangulation, kind: GraphKind) -> Vec<Edge> {
     match kind {
         GraphKind::Dt => dt.edges(),
         GraphKind::Sig => sig::sig(dt),
@@ -124,14 +127,14 @@ mod tests {
             })
             .collect();
         let dt = Triangulation::new(&pts).unwrap();
-        let all = graph_of(&dt, GraphKind::Dt);
+        let all = proximity_graph_on(&dt, GraphKind::Dt);
         let subset = |a: &[Edge], b: &[Edge]| a.iter().all(|e| b.binary_search(e).is_ok());
-        let sigdt = graph_of(&dt, GraphKind::SigDt);
-        let sig = graph_of(&dt, GraphKind::Sig);
+        let sigdt = proximity_graph_on(&dt, GraphKind::SigDt);
+        let sig = proximity_graph_on(&dt, GraphKind::Sig);
         assert!(subset(&sigdt, &all) && subset(&sigdt, &sig));
-        assert!(subset(&graph_of(&dt, GraphKind::Emst), &all));
-        assert!(subset(&sigdt, &graph_of(&dt, GraphKind::SigDt2)));
-        assert_eq!(graph_of(&dt, GraphKind::Emst).len(), 199);
+        assert!(subset(&proximity_graph_on(&dt, GraphKind::Emst), &all));
+        assert!(subset(&sigdt, &proximity_graph_on(&dt, GraphKind::SigDt2)));
+        assert_eq!(proximity_graph_on(&dt, GraphKind::Emst).len(), 199);
         // SIGDT = SIG ∩ DT.
         let both: Vec<Edge> =
             sig.iter().copied().filter(|e| all.binary_search(e).is_ok()).collect();

@@ -15,15 +15,15 @@
 //!
 //! [Tou88]: https://doi.org/10.1016/0167-8655(88)90029-4
 use super::kdtree::KdTree;
-use super::nearest::nearest_neighbour_distances;
+use super::nearest::nearest_vertex_distances;
 use super::sigdt::{is_sig_edge, TIE_SLACK};
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, Point};
 use crate::Edge;
 
 /// The SIG of the triangulation's distinct points as sorted input-index pairs.
-pub fn sig(dt: &Triangulation) -> Vec<Edge> {
-    let r = nearest_neighbour_distances(dt);
+pub(crate) fn sig(dt: &Triangulation) -> Vec<Edge> {
+    let r = nearest_vertex_distances(dt);
     let points: Vec<Point> = (0..dt.num_vertices() as u32).map(|v| dt.point(v)).collect();
     let tree = KdTree::new(&points);
     let mut pairs = Vec::new();

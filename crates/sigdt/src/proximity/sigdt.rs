@@ -19,19 +19,19 @@
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 //! [Tou88]: https://doi.org/10.1016/0167-8655(88)90029-4
-use super::nearest::nearest_neighbour_distances;
+use super::nearest::nearest_vertex_distances;
 use crate::delaunay::{Shape, Triangulation};
 use crate::geometry::{distance, squared_distance};
 use crate::graph::EdgeMask;
 use crate::Edge;
 
 /// Relative slack of the SIG test: `|uv| <= (r(u) + r(v)) · (1 + TIE_SLACK)`.
-pub const TIE_SLACK: f64 = 1e-12;
+pub(crate) const TIE_SLACK: f64 = 1e-12;
 
 /// Whether an edge of length `len` between points with nearest-neighbour distances `ru`,
 /// `rv` is a (closed) SIG edge.
 #[inline]
-pub fn is_sig_edge(len: f64, ru: f64, rv: f64) -> bool {
+pub(crate) fn is_sig_edge(len: f64, ru: f64, rv: f64) -> bool {
     len <= (ru + rv) * (1.0 + TIE_SLACK)
 }
 
@@ -45,8 +45,8 @@ pub fn sigdt_mask(dt: &Triangulation) -> EdgeMask {
 }
 
 /// [`sigdt_mask`] and the degree of every vertex in it, from one pass over the edges.
-pub fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
-    let r = nearest_neighbour_distances(dt);
+pub(crate) fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
+    let r = nearest_vertex_distances(dt);
     let mut mask = EdgeMask::new(dt);
     let mut degree = vec![0u32; dt.num_vertices()];
     for h in dt.edge_halfedges() {
@@ -63,11 +63,11 @@ pub fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
 
 /// The SIGDT edges as sorted input-index pairs; for collinear input, the SIG-conforming
 /// segments between consecutive points.
-pub fn sigdt(dt: &Triangulation) -> Vec<Edge> {
+pub(crate) fn sigdt(dt: &Triangulation) -> Vec<Edge> {
     match dt.shape() {
         Shape::Proper => sigdt_mask(dt).edges(dt),
         _ => {
-            let r = nearest_neighbour_distances(dt);
+            let r = nearest_vertex_distances(dt);
             let keep = dt.line_edges().filter(|&[a, b]| {
                 is_sig_edge(distance(dt.point(a), dt.point(b)), r[a as usize], r[b as usize])
             });

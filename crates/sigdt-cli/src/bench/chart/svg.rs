@@ -258,7 +258,7 @@ pub(super) fn num(v: f64) -> String {
     format!("{:.1}", if v.is_finite() { v } else { 0.0 })
 }
 
-pub(super) use sigdt::render::escape_xml as escape;
+pub(super) use sigdt_lab::render::escape_xml as escape;
 
 /// Asserts a chart is well formed and has no NaN or infinite coordinate (test helper).
 #[cfg(test)]

@@ -1,0 +1,142 @@
+//! The output formats of `sigdt reconstruct`: the kernel's text formats and the SVG picture.
+
+use std::fmt;
+use std::io::{self, Write};
+use std::path::Path;
+use std::str::FromStr;
+
+use sigdt::io::OutputFormat as Text;
+use sigdt::{Point, Reconstruction};
+use sigdt_lab::render::{render_svg, Layers, RenderOptions};
+
+/// An output format. Spelled `edges`, `loops`, `wkt`, `geojson` and `svg`; [`FromStr`] and
+/// [`Display`](fmt::Display) map between the two.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OutputFormat {
+    /// A text format of the kernel ([`sigdt::io::OutputFormat`]).
+    Text(Text),
+    /// A standalone SVG picture of the points, edges and filled loops, with a legend.
+    Svg,
+}
+
+impl OutputFormat {
+    /// Every format, in the order they are listed in help texts.
+    pub const ALL: &'static [OutputFormat] = &[
+        OutputFormat::Text(Text::Edges),
+        OutputFormat::Text(Text::Loops),
+        OutputFormat::Text(Text::Wkt),
+        OutputFormat::Text(Text::GeoJson),
+        OutputFormat::Svg,
+    ];
+
+    /// The lower-case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            OutputFormat::Text(text) => text.name(),
+            OutputFormat::Svg => "svg",
+        }
+    }
+
+    /// The format implied by the file extension (case-insensitive): the kernel's text
+    /// extensions and `.svg`; anything else is `None`.
+    pub fn from_path(path: &Path) -> Option<OutputFormat> {
+        let svg = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("svg"));
+        if svg {
+            Some(OutputFormat::Svg)
+        } else {
+            Text::from_path(path).map(OutputFormat::Text)
+        }
+    }
+
+    /// Writes `rec`, whose indices refer to `points`, to `w` in this format.
+    pub fn write(
+        self,
+        w: &mut dyn Write,
+        points: &[Point],
+        rec: &Reconstruction,
+    ) -> io::Result<()> {
+        match self {
+            OutputFormat::Text(text) => sigdt::io::write_reconstruction(w, text, points, rec),
+            OutputFormat::Svg => w.write_all(picture(points, rec).as_bytes()),
+        }
+    }
+}
+
+/// The SVG output: the points and the result, with the default [`RenderOptions`].
+fn picture(points: &[Point], rec: &Reconstruction) -> String {
+    let layers = Layers { points: true, result: Some(rec), ..Layers::default() };
+    render_svg(points, &layers, &RenderOptions::default())
+}
+
+impl Default for OutputFormat {
+    fn default() -> Self {
+        OutputFormat::Text(Text::Edges)
+    }
+}
+
+impl fmt::Display for OutputFormat {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for OutputFormat {
+    type Err = sigdt::Error;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        OutputFormat::ALL.iter().copied().find(|f| f.name() == s).ok_or_else(|| {
+            let names: Vec<_> = OutputFormat::ALL.iter().map(|f| f.name()).collect();
+            sigdt::Error::InvalidOption(format!(
+                "unknown output format '{s}' (expected one of: {})",
+                names.join(", ")
+            ))
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SQUARE: [Point; 4] = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+
+    fn text(format: OutputFormat, points: &[Point], rec: &Reconstruction) -> String {
+        let mut out = Vec::new();
+        format.write(&mut out, points, rec).unwrap();
+        String::from_utf8(out).unwrap()
+    }
+
+    fn square() -> Reconstruction {
+        Reconstruction {
+            edges: vec![[0, 1], [0, 3], [1, 2], [2, 3]],
+            loops: vec![vec![0, 1, 2, 3]],
+            ..Reconstruction::default()
+        }
+    }
+
+    #[test]
+    fn names_round_trip() {
+        for &f in OutputFormat::ALL {
+            assert_eq!(f.to_string().parse::<OutputFormat>().unwrap(), f);
+        }
+        let err = "png".parse::<OutputFormat>().unwrap_err().to_string();
+        assert!(err.contains("'png'") && err.contains("edges, loops, wkt, geojson, svg"), "{err}");
+        let format = |name: &str| OutputFormat::from_path(Path::new(name));
+        assert_eq!(format("a.JSON"), Some(OutputFormat::Text(Text::GeoJson)));
+        assert_eq!(format("a.txt"), Some(OutputFormat::Text(Text::Edges)));
+        assert_eq!(format("a.loops"), Some(OutputFormat::Text(Text::Loops)));
+        assert_eq!(format("a.SVG"), Some(OutputFormat::Svg));
+        assert_eq!(format("a.png"), None);
+    }
+
+    #[test]
+    fn svg_is_the_picture() {
+        let svg = text(OutputFormat::Svg, &SQUARE, &square());
+        assert_eq!(svg, picture(&SQUARE, &square()));
+        assert!(svg.starts_with("<svg ") && svg.ends_with("</svg>\n"), "{svg}");
+        assert!(svg.contains("points 4") && svg.contains("result 4 edges, 1 loop"), "{svg}");
+        let empty = Reconstruction { status: sigdt::Status::TooFewPoints, ..Default::default() };
+        let empty = text(OutputFormat::Svg, &[], &empty);
+        assert!(empty.ends_with("</svg>\n") && !empty.contains("NaN"), "{empty}");
+    }
+}

@@ -1,0 +1,362 @@
+//! Chains of cubic Bézier segments read from the `<path d="…">` elements of an SVG file.
+//!
+//! The Bézier experiment of \[MOW22\] (Fig. 14) ε-samples cubic Bézier drawings, as the
+//! benchmark authors' `sampling2d` does with their SVG files \[OMW21\]. This module turns such
+//! a file into [`BezierPath`]s:
+//!
+//! 1. A small scanner finds every `<path …>` start tag outside comments and reads its `d`
+//!    attribute (single or double quotes, any whitespace, tags spanning several lines).
+//!    Other elements (`<rect>`, `<circle>`, …) are ignored.
+//! 2. `svgtypes`' simplifying parser turns the path data into absolute move-to, line-to,
+//!    cubic and quadratic segments (relative, smooth, horizontal/vertical and arc commands
+//!    are converted by it; arcs become cubics).
+//! 3. Lines and quadratics are degree-elevated to cubics, which is exact. Segments whose four
+//!    control points coincide are dropped.
+//! 4. Each subpath (`M …`) becomes its own curve. It is closed if it ends with `Z` (a closing
+//!    line is added when its end is not its start) or if its last point equals its first one
+//!    exactly; otherwise it is open.
+//!
+//! Not supported, by design: `transform` attributes (on the path or on enclosing groups) are
+//! **ignored**, so coordinates are the raw user units of `d`; units, `viewBox` and CSS are
+//! ignored as well; entities in `d` are not decoded (they fail to parse). A `<path>` without
+//! `d` draws nothing and is skipped.
+//!
+//! # Complexity
+//! O(length of the file).
+//!
+//! # Errors
+//! [`Error::Parse`] naming the file and the line of the offending `<path` (an unterminated
+//! tag, comment or attribute value, bad path data, a non-finite coordinate), and
+//! [`Error::Io`] for unreadable files.
+//!
+//! \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//! \[OMW21\] S. Ohrhallinger, J. Peethambaran, A. Parakkat, T. Dey, R. Muthuganapathy.
+//! 2D Points Curve Reconstruction Survey and Benchmark. 2021.
+use std::path::Path;
+
+use svgtypes::{SimplePathSegment, SimplifyingPathParser};
+
+use sigdt::{Error, Point, Result};
+
+/// A chain of cubic Bézier segments, each `[start, control1, control2, end]`, where every
+/// segment starts where the previous one ends (and, if `closed`, the last one ends where the
+/// first one starts).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct BezierPath {
+    /// The segments in path order.
+    pub segments: Vec<[Point; 4]>,
+    /// Whether the chain is a closed curve.
+    pub closed: bool,
+}
+
+impl BezierPath {
+    /// The point at global parameter `u`: segment `⌊u⌋` at its local parameter `u − ⌊u⌋`.
+    /// `u` is taken modulo the number of segments for a closed path and clamped to
+    /// `[0, segments]` for an open one. The origin for an empty path.
+    pub fn point(&self, u: f64) -> Point {
+        match self.locate(u) {
+            Some((b, t)) => {
+                let s = 1.0 - t;
+                let w = [s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t];
+                let c = |a: usize| (0..4).map(|k| w[k] * b[k][a]).sum::<f64>();
+                [c(0), c(1)]
+            }
+            None => [0.0, 0.0],
+        }
+    }
+
+    /// The derivative with respect to `u` at global parameter `u` (same conventions as
+    /// [`point`](Self::point)). It may vanish where control points coincide.
+    pub fn derivative(&self, u: f64) -> Point {
+        match self.locate(u) {
+            Some((b, t)) => {
+                let s = 1.0 - t;
+                let w = [3.0 * s * s, 6.0 * s * t, 3.0 * t * t];
+                let c = |a: usize| (0..3).map(|k| w[k] * (b[k + 1][a] - b[k][a])).sum::<f64>();
+                [c(0), c(1)]
+            }
+            None => [0.0, 0.0],
+        }
+    }
+
+    /// The segment and local parameter of global parameter `u`.
+    fn locate(&self, u: f64) -> Option<(&[Point; 4], f64)> {
+        let m = self.segments.len();
+        if m == 0 || !u.is_finite() {
+            return self.segments.first().map(|b| (b, 0.0));
+        }
+        let span = m as f64;
+        let u = if self.closed { u.rem_euclid(span) } else { u.clamp(0.0, span) };
+        let k = (u.floor() as usize).min(m - 1);
+        Some((&self.segments[k], u - k as f64))
+    }
+}
+
+/// Reads every `<path>` of the SVG file `path` as Bézier chains, one per subpath, in file
+/// order.
+///
+/// Lines and quadratics are elevated to cubics, arcs become cubics, zero-length segments are
+/// dropped. A subpath is closed if it ends with `Z` (adding a closing line if needed) or
+/// returns exactly to its start. `transform` attributes, units, `viewBox` and CSS are
+/// **ignored**: coordinates are the raw numbers of `d`. Every `<path>` outside comments counts,
+/// also one inside `<defs>`; a `<path>` without `d` is skipped.
+///
+/// # Errors
+/// [`Error::Io`] if the file cannot be read; [`Error::Parse`] with the file and the line of
+/// the offending `<path` for an unterminated tag, comment or value, bad path data or a
+/// non-finite coordinate.
+pub fn read_svg_paths(path: &Path) -> Result<Vec<BezierPath>> {
+    let name = path.display().to_string();
+    let text =
+        std::fs::read_to_string(path).map_err(|source| Error::Io { path: name.clone(), source })?;
+    parse_svg_paths(&text, &name)
+}
+
+/// Parses the `<path>` elements of the SVG document `text`; `name` is the file name used in
+/// error messages. Returns no curve for a document without paths.
+///
+/// # Errors
+/// As [`read_svg_paths`], without I/O errors.
+pub fn parse_svg_paths(text: &str, name: &str) -> Result<Vec<BezierPath>> {
+    let mut curves = Vec::new();
+    for (d, line) in path_data(text, name)? {
+        subpaths(&d, name, line, &mut curves)?;
+    }
+    Ok(curves)
+}
+
+/// The `d` value and 1-based line of every `<path` start tag of `text`, in order.
+fn path_data(text: &str, name: &str) -> Result<Vec<(String, usize)>> {
+    let bytes = text.as_bytes();
+    let line_at = |pos: usize| 1 + bytes[..pos].iter().filter(|&&b| b == b'\n').count();
+    let fail = |pos: usize, message: String| Error::Parse {
+        path: name.to_string(),
+        line: line_at(pos),
+        message,
+    };
+    let mut found = Vec::new();
+    let mut pos = 0;
+    while let Some(off) = text[pos..].find('<') {
+        let start = pos + off;
+        let rest = &text[start..];
+        if rest.starts_with("<!--") {
+            let end = rest.find("-->").ok_or_else(|| fail(start, "unterminated comment".into()))?;
+            pos = start + end + 3;
+            continue;
+        }
+        if rest.starts_with("<![CDATA[") {
+            let end =
+                rest.find("]]>").ok_or_else(|| fail(start, "unterminated CDATA section".into()))?;
+            pos = start + end + 3;
+            continue;
+        }
+        let is_path = rest.starts_with("<path")
+            && rest[5..].chars().next().is_some_and(|c| c.is_whitespace() || c == '/' || c == '>');
+        if !is_path {
+            pos = start + 1;
+            continue;
+        }
+        let (d, end) = attribute_d(text, start + 5).map_err(|message| fail(start, message))?;
+        if let Some(d) = d {
+            found.push((d, line_at(start)));
+        }
+        pos = end;
+    }
+    Ok(found)
+}
+
+/// Scans the attributes of a start tag from byte `pos` (just after the element name) to its
+/// closing `>`; returns the value of `d` (if any) and the position after the tag.
+fn attribute_d(text: &str, mut pos: usize) -> std::result::Result<(Option<String>, usize), String> {
+    let b = text.as_bytes();
+    let skip_ws = |mut p: usize| {
+        while p < b.len() && b[p].is_ascii_whitespace() {
+            p += 1;
+        }
+        p
+    };
+    let mut d = None;
+    loop {
+        pos = skip_ws(pos);
+        match b.get(pos) {
+            None => return Err("unterminated <path> tag".into()),
+            Some(b'>') => return Ok((d, pos + 1)),
+            Some(b'/') if b.get(pos + 1) == Some(&b'>') => return Ok((d, pos + 2)),
+            _ => {}
+        }
+        let name_start = pos;
+        while pos < b.len()
+            && !b[pos].is_ascii_whitespace()
+            && !matches!(b[pos], b'=' | b'>' | b'/')
+        {
+            pos += 1;
+        }
+        let attr = &text[name_start..pos];
+        if attr.is_empty() {
+            return Err(format!("unexpected '{}' in <path> tag", b[pos] as char));
+        }
+        pos = skip_ws(pos);
+        if b.get(pos) != Some(&b'=') {
+            continue; // an attribute without value (not XML, but harmless)
+        }
+        pos = skip_ws(pos + 1);
+        let quote = match b.get(pos) {
+            Some(&q @ (b'"' | b'\'')) => q,
+            _ => return Err(format!("attribute '{attr}' of <path> has no quoted value")),
+        };
+        let len = text[pos + 1..]
+            .find(quote as char)
+            .ok_or_else(|| format!("unterminated value of attribute '{attr}'"))?;
+        if attr == "d" {
+            d = Some(text[pos + 1..pos + 1 + len].to_string());
+        }
+        pos += len + 2;
+    }
+}
+
+/// Appends the subpaths of path data `d` (from the `<path` on `line`) to `curves`.
+fn subpaths(d: &str, name: &str, line: usize, curves: &mut Vec<BezierPath>) -> Result<()> {
+    let fail = |message: String| Error::Parse { path: name.to_string(), line, message };
+    let mut current = BezierPath::default();
+    let (mut start, mut at) = ([0.0, 0.0], [0.0, 0.0]);
+    let mut finish = |path: &mut BezierPath, at: Point, start: Point| {
+        let mut path = std::mem::take(path);
+        if !path.segments.is_empty() {
+            path.closed |= at == start;
+            curves.push(path);
+        }
+    };
+    for segment in SimplifyingPathParser::from(d) {
+        let segment = segment.map_err(|e| fail(format!("bad path data: {e}")))?;
+        let (cubic, end) = match segment {
+            SimplePathSegment::MoveTo { x, y } => {
+                finish(&mut current, at, start);
+                start = finite([x, y]).ok_or_else(|| fail(non_finite(x, y)))?;
+                at = start;
+                continue;
+            }
+            SimplePathSegment::ClosePath => {
+                if at != start {
+                    current.segments.push(line_cubic(at, start));
+                }
+                current.closed = true;
+                finish(&mut current, start, start);
+                at = start;
+                continue;
+            }
+            SimplePathSegment::LineTo { x, y } => {
+                let end = finite([x, y]).ok_or_else(|| fail(non_finite(x, y)))?;
+                (line_cubic(at, end), end)
+            }
+            SimplePathSegment::Quadratic { x1, y1, x, y } => {
+                let c = finite([x1, y1]).ok_or_else(|| fail(non_finite(x1, y1)))?;
+                let end = finite([x, y]).ok_or_else(|| fail(non_finite(x, y)))?;
+                let lerp = |p: Point, q: Point| {
+                    [p[0] + (q[0] - p[0]) * 2.0 / 3.0, p[1] + (q[1] - p[1]) * 2.0 / 3.0]
+                };
+                ([at, lerp(at, c), lerp(end, c), end], end)
+            }
+            SimplePathSegment::CurveTo { x1, y1, x2, y2, x, y } => {
+                let c1 = finite([x1, y1]).ok_or_else(|| fail(non_finite(x1, y1)))?;
+                let c2 = finite([x2, y2]).ok_or_else(|| fail(non_finite(x2, y2)))?;
+                let end = finite([x, y]).ok_or_else(|| fail(non_finite(x, y)))?;
+                ([at, c1, c2, end], end)
+            }
+        };
+        if cubic.iter().any(|&p| p != at) {
+            current.segments.push(cubic);
+        }
+        at = end;
+    }
+    finish(&mut current, at, start);
+    Ok(())
+}
+
+/// The cubic tracing the straight segment from `p` to `q` at constant speed.
+fn line_cubic(p: Point, q: Point) -> [Point; 4] {
+    let lerp = |s: f64| [p[0] + (q[0] - p[0]) * s, p[1] + (q[1] - p[1]) * s];
+    [p, lerp(1.0 / 3.0), lerp(2.0 / 3.0), q]
+}
+
+fn finite(p: Point) -> Option<Point> {
+    p.iter().all(|v| v.is_finite()).then_some(p)
+}
+
+fn non_finite(x: f64, y: f64) -> String {
+    format!("non-finite coordinate ({x}, {y}) in path data")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Vec<BezierPath>> {
+        parse_svg_paths(text, "t.svg")
+    }
+
+    #[test]
+    fn reads_absolute_relative_and_elevated_segments() {
+        let svg =
+            "<svg>\n<!-- <path d=\"M 9 9 L 8 8\"/> -->\n<g transform='scale(2)'>\n<path id='a'\n  \
+                   style=\"fill:none\"\n  d='m 0,0 l 3,0 q 3,0 3,3 c 0,3 -6,3 -6,0 z'/></g>\n\
+                   <pathology d='M 1 1'/><path d=\"M 0 0 C 1 1 2 1 3 0\" /></svg>";
+        let curves = parse(svg).unwrap();
+        assert_eq!(curves.len(), 2);
+        let (a, b) = (&curves[0], &curves[1]);
+        assert!(a.closed && !b.closed);
+        assert_eq!(a.segments.len(), 4);
+        assert_eq!(a.segments[0], [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0]]);
+        assert_eq!(a.segments[1], [[3.0, 0.0], [5.0, 0.0], [6.0, 1.0], [6.0, 3.0]]);
+        assert_eq!(a.segments[3], line_cubic([0.0, 3.0], [0.0, 0.0]));
+        assert_eq!(b.segments, vec![[[0.0, 0.0], [1.0, 1.0], [2.0, 1.0], [3.0, 0.0]]]);
+        assert_eq!(b.point(0.5), [1.5, 0.75]);
+        assert_eq!(b.derivative(0.0), [3.0, 3.0]);
+        assert_eq!(a.point(4.0), a.point(0.0));
+    }
+
+    #[test]
+    fn subpaths_are_separate_curves_and_closing_lines_are_added() {
+        let curves =
+            parse("<path d='M0 0 H 2 V 2 Z M 5 5 L 6 5 L 6 6 L 5 5 M 7 7 L 7 7'/>").unwrap();
+        assert_eq!(curves.len(), 2);
+        assert!(curves[0].closed && curves[1].closed);
+        assert_eq!(curves[0].segments.len(), 3);
+        assert_eq!(curves[0].segments[2], line_cubic([2.0, 2.0], [0.0, 0.0]));
+        assert_eq!(curves[1].segments.len(), 3);
+        assert!(parse("<svg><rect/></svg>").unwrap().is_empty());
+    }
+
+    #[test]
+    fn errors_name_file_and_line() {
+        let message = |text: &str| parse(text).unwrap_err().to_string();
+        assert_eq!(
+            message("<svg>\n\n<path d='M 0 0 L 1 x'/>"),
+            "t.svg:3: bad path data: ".to_string() + &bad("M 0 0 L 1 x")
+        );
+        assert!(message("<svg>\n<path d='M 0 0").starts_with("t.svg:2: unterminated value"));
+        assert!(
+            message("<path d=M/>").starts_with("t.svg:1: attribute 'd' of <path> has no quoted")
+        );
+        assert!(message("\n<path d='M 0 0'").starts_with("t.svg:2: unterminated <path> tag"));
+        assert!(message("<!-- <path").starts_with("t.svg:1: unterminated comment"));
+        let m = message("<path d='M 1e308 0 l 1e308 0'/>");
+        assert!(m.contains("non-finite"), "{m}");
+        let missing = read_svg_paths(Path::new("/nonexistent/x.svg")).unwrap_err();
+        assert!(missing.to_string().starts_with("/nonexistent/x.svg: "));
+    }
+
+    fn bad(d: &str) -> String {
+        SimplifyingPathParser::from(d).find_map(|s| s.err()).unwrap().to_string()
+    }
+
+    #[test]
+    fn reads_the_bundled_drawings() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/svg");
+        let simple = read_svg_paths(&dir.join("simple.svg")).unwrap();
+        assert_eq!(simple.len(), 1);
+        assert!(simple[0].closed && simple[0].segments.len() == 5);
+        let corner = read_svg_paths(&dir.join("corner.svg")).unwrap();
+        assert_eq!(corner.len(), 2);
+        assert!(corner[0].closed && !corner[1].closed);
+    }
+}

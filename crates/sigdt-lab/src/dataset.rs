@@ -1,0 +1,221 @@
+//! Labelled folders in the layout of `data/curves` and `data/real`: `index.csv` with one row
+//! per case (`name,category,n_points,...,epsilon,...`), and beside it `NAME.xy` points with
+//! `NAME.gt` ground-truth edges. An optional `NAME.truth.xy` holds the clean positions of
+//! noisy points (same indices), to measure distances against the clean curve.
+//!
+//! This is the one reader of such folders: the benchmark, the golden tests and the examples
+//! all go through it. `index.csv` is read as CSV: a UTF-8 byte-order mark is skipped, fields
+//! may be quoted (`"a,b"`, with `""` for a quote), blank lines are skipped, and every problem
+//! is an error naming the file and line, as is a case listed twice.
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+
+use sigdt::{Edge, Error, Point, Result};
+
+/// One labelled point set of a folder: a row of its `index.csv`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Case {
+    /// File stem: the points are `NAME.xy`, the ground truth `NAME.gt`.
+    pub name: String,
+    /// Category: manifold, sharp, open, multiple, noisy, outliers, bezier or large.
+    pub category: String,
+    /// Number of input points (0 when the column is missing or empty).
+    pub n_points: usize,
+    /// The sampling ε of the ground truth, from the `epsilon` column (empty: unknown).
+    pub epsilon: Option<f64>,
+}
+
+/// The files of one case.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CaseFiles {
+    /// `NAME.xy`.
+    pub points: PathBuf,
+    /// `NAME.gt`.
+    pub gt: PathBuf,
+    /// `NAME.truth.xy`, when it exists.
+    pub truth: Option<PathBuf>,
+}
+
+/// The cases of the folder `dir`, in `index.csv` order.
+///
+/// # Errors
+/// [`Error::Io`] when `index.csv` cannot be read, [`Error::Parse`] (file and line) for a
+/// missing `name` or `category` column, a row with too few fields, a name that is not a
+/// file stem, a number that is not a number ≥ 0, or a name listed twice.
+pub fn read_index(dir: &Path) -> Result<Vec<Case>> {
+    let path = dir.join("index.csv");
+    let shown = path.display().to_string();
+    let text = std::fs::read_to_string(&path)
+        .map_err(|source| Error::Io { path: shown.clone(), source })?;
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+    let error = |line: usize, message: String| Error::Parse { path: shown.clone(), line, message };
+    let mut rows = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
+    let Some((_, header)) = rows.next() else {
+        return Err(error(1, "empty index, expected a header".into()));
+    };
+    let header = fields(header).map_err(|m| error(1, m))?;
+    let column = |name: &str| header.iter().position(|h| h == name);
+    let (Some(name_col), Some(category_col)) = (column("name"), column("category")) else {
+        return Err(error(1, "the header must name the columns 'name' and 'category'".into()));
+    };
+    let (points_col, epsilon_col) = (column("n_points"), column("epsilon"));
+    let mut cases = Vec::new();
+    let mut seen = HashSet::new();
+    for (k, row) in rows {
+        let line = k + 1;
+        let fields = fields(row).map_err(|m| error(line, m))?;
+        if fields.len() < header.len() {
+            let message = format!("{} fields, the header has {}", fields.len(), header.len());
+            return Err(error(line, message));
+        }
+        let name = fields[name_col].clone();
+        if name.is_empty() || name.contains(['/', '\\']) || name.starts_with('.') {
+            return Err(error(line, format!("'{name}' is not a case name (a file stem)")));
+        }
+        if !seen.insert(name.clone()) {
+            return Err(error(line, format!("case '{name}' is listed twice")));
+        }
+        let number = |col: Option<usize>, what: &str| -> Result<Option<f64>> {
+            match col.map(|c| fields[c].as_str()) {
+                None | Some("" | "-" | "nan" | "NaN") => Ok(None),
+                Some(text) => match text.parse::<f64>() {
+                    Ok(v) if v.is_finite() && v >= 0.0 => Ok(Some(v)),
+                    _ => Err(error(line, format!("{what} '{text}' is not a number >= 0"))),
+                },
+            }
+        };
+        cases.push(Case {
+            n_points: number(points_col, "n_points")?.unwrap_or(0.0) as usize,
+            epsilon: number(epsilon_col, "epsilon")?,
+            category: fields[category_col].clone(),
+            name,
+        });
+    }
+    Ok(cases)
+}
+
+impl Case {
+    /// The files of this case in `dir`.
+    pub fn files(&self, dir: &Path) -> CaseFiles {
+        let truth = dir.join(format!("{}.truth.xy", self.name));
+        CaseFiles {
+            points: dir.join(format!("{}.xy", self.name)),
+            gt: dir.join(format!("{}.gt", self.name)),
+            truth: truth.is_file().then_some(truth),
+        }
+    }
+
+    /// The points and the ground-truth edges (as `[i, j]` with `i < j`, sorted) of this
+    /// case in `dir`.
+    ///
+    /// # Errors
+    /// As [`sigdt::io::read_points`] and [`sigdt::io::read_edges`]; an edge index past the
+    /// points is [`Error::Parse`] naming the ground-truth file.
+    pub fn read(&self, dir: &Path) -> Result<(Vec<Point>, Vec<Edge>)> {
+        let files = self.files(dir);
+        let points = sigdt::io::read_points(&files.points)?;
+        let mut gt: Vec<Edge> = sigdt::io::read_edges(&files.gt)?
+            .into_iter()
+            .map(|[i, j]| [i.min(j), i.max(j)])
+            .collect();
+        gt.sort_unstable();
+        if let Some(&[i, j]) = gt.iter().find(|e| e[1] >= points.len()) {
+            return Err(Error::Parse {
+                path: files.gt.display().to_string(),
+                line: 0,
+                message: format!("edge [{i}, {j}] refers past the {} points", points.len()),
+            });
+        }
+        Ok((points, gt))
+    }
+}
+
+/// The labelled folder `folder` of the repository's `data/` (`curves`, `real`), or the folder
+/// named by the environment variable `SIGDT_DATA` when it is set.
+pub fn data_dir(folder: &str) -> PathBuf {
+    std::env::var_os("SIGDT_DATA")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data").join(folder))
+}
+
+/// The fields of one CSV row: separated by commas, trimmed, optionally quoted.
+fn fields(row: &str) -> std::result::Result<Vec<String>, String> {
+    let mut out = Vec::new();
+    let mut chars = row.chars().peekable();
+    loop {
+        let mut field = String::new();
+        while chars.peek().is_some_and(|c| *c == ' ' || *c == '\t') {
+            chars.next();
+        }
+        if chars.peek() == Some(&'"') {
+            chars.next();
+            loop {
+                match chars.next() {
+                    Some('"') if chars.peek() == Some(&'"') => {
+                        chars.next();
+                        field.push('"');
+                    }
+                    Some('"') => break,
+                    Some(c) => field.push(c),
+                    None => return Err("a quoted field is not closed".into()),
+                }
+            }
+            while chars.peek().is_some_and(|c| *c != ',') {
+                if !chars.next().is_some_and(char::is_whitespace) {
+                    return Err("text after a quoted field".into());
+                }
+            }
+        } else {
+            while let Some(&c) = chars.peek().filter(|c| **c != ',') {
+                field.push(c);
+                chars.next();
+            }
+            field = field.trim().to_string();
+        }
+        out.push(field);
+        if chars.next().is_none() {
+            return Ok(out);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn index(text: &str) -> Result<Vec<Case>> {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("index.csv"), text).unwrap();
+        read_index(dir.path())
+    }
+
+    #[test]
+    fn reads_rows() {
+        let cases =
+            index("name,category,n_points,epsilon\na,manifold,10,0.5\nb,open,12,\n").unwrap();
+        assert_eq!(cases.len(), 2);
+        assert_eq!((cases[0].n_points, cases[0].epsilon), (10, Some(0.5)));
+        assert_eq!(cases[1].epsilon, None);
+    }
+
+    #[test]
+    fn a_bom_and_quoted_fields_are_read() {
+        let cases =
+            index("\u{feff}name,category,source\n\"a\",manifold,\"font:x, \"\"y\"\"\"\n").unwrap();
+        assert_eq!((cases[0].name.as_str(), cases[0].category.as_str()), ("a", "manifold"));
+        assert_eq!(fields(r#"a, "b,c" ,"d""e""#).unwrap(), ["a", "b,c", "d\"e"]);
+        assert!(fields(r#"a,"b"#).unwrap_err().contains("not closed"));
+    }
+
+    #[test]
+    fn errors_name_file_and_line() {
+        let err = index("name,category,epsilon\na,manifold,x\n").unwrap_err().to_string();
+        assert!(err.contains("index.csv:2:") && err.contains("'x'"), "{err}");
+        let err = index("name,kind\n").unwrap_err().to_string();
+        assert!(err.contains("index.csv:1:"), "{err}");
+        let err = index("name,category\n../x,open\n").unwrap_err().to_string();
+        assert!(err.contains("not a case name"), "{err}");
+        let err = index("name,category\na,open\n\na,sharp\n").unwrap_err().to_string();
+        assert!(err.contains("index.csv:4:") && err.contains("listed twice"), "{err}");
+    }
+}

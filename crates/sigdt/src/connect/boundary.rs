@@ -1,0 +1,258 @@
+//! The state inflating and sculpting work on: triangle labels, the boundary edge set `B`,
+//! vertex classes (`docs/algorithms.md` §2.1–2.3).
+//!
+//! [MOW22] §4: "the boundary is the connected set of edges that includes all edges of the
+//! graph G in its interior". Operationally (§2.2): the triangles reachable from outside the
+//! convex hull without crossing an edge of `G` are exterior (OUT), all others interior (IN);
+//! `B` is the set of edges of `G` with at least one exterior side (the outside of the hull
+//! counts as exterior). Edges of `G` with both sides interior are dropped.
+//!
+//! Vertex classes are read off the star of the vertex, with no angular sorting: `T` = edges
+//! at `v` whose sides differ, `D` = edges of `B` at `v` with both sides exterior (dangling).
+//! A vertex is *interior* if it touches no exterior triangle and is not on the hull,
+//! *manifold* if `T = 2` and `D = 0`, and *non-manifold* otherwise (pinched, or with
+//! dangling edges: "the spaces defined by its incident edges are exterior" [MOW22]).
+//!
+//! # References
+//! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+use super::trace::{Phase, Step, Trace};
+use crate::delaunay::{prev, Triangulation, EMPTY};
+use crate::graph::{EdgeMask, UnionFind};
+
+/// How a vertex sits on the boundary.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VertexClass {
+    /// Exactly one exterior and one interior wedge, no dangling edge.
+    Manifold,
+    /// Pinched, dangling, or otherwise not (yet) a polygon vertex.
+    NonManifold,
+    /// Surrounded by interior triangles: not on the boundary.
+    Interior,
+}
+
+/// Labels, boundary and classes of one run.
+pub struct Boundary<'a> {
+    /// The triangulation.
+    pub dt: &'a Triangulation,
+    /// `inside[t]`: triangle `t` is interior (IN).
+    pub inside: Vec<bool>,
+    /// The boundary edge set `B`.
+    pub edges: EdgeMask,
+    /// Class of every vertex.
+    pub class: Vec<VertexClass>,
+    /// Connectivity of `B` (an over-approximation; see [`pocket`](super::pocket));
+    /// built by [`Boundary::track_components`] when inflating has work to do.
+    pub components: UnionFind,
+    /// Number of non-manifold vertices.
+    pub non_manifold: usize,
+    /// Number of interior vertices.
+    pub interior: usize,
+    /// Every label change after [`Boundary::from_graph`], in order, when recording
+    /// ([`trace`](super::trace)); `None` (the default) records nothing.
+    pub trace: Option<Vec<Step>>,
+    /// Visit stamps per triangle for pocket searches.
+    pub(crate) stamp: Vec<u32>,
+    pub(crate) epoch: u32,
+}
+
+impl<'a> Boundary<'a> {
+    /// Labels and boundary of graph `g` (§2.2), and the class of every vertex.
+    pub fn from_graph(dt: &'a Triangulation, g: &EdgeMask) -> Boundary<'a> {
+        let nt = dt.num_triangles();
+        let mut inside = vec![true; nt];
+        let mut queue: Vec<u32> = Vec::new();
+        for h in 0..dt.num_halfedges() as u32 {
+            if dt.twin(h) == EMPTY && !g.contains(h) && inside[(h / 3) as usize] {
+                inside[(h / 3) as usize] = false;
+                queue.push(h / 3);
+            }
+        }
+        while let Some(t) = queue.pop() {
+            for h in 3 * t..3 * t + 3 {
+                let twin = dt.twin(h);
+                if twin != EMPTY && !g.contains(h) && inside[(twin / 3) as usize] {
+                    inside[(twin / 3) as usize] = false;
+                    queue.push(twin / 3);
+                }
+            }
+        }
+        let mut bd = Boundary {
+            dt,
+            inside,
+            edges: EdgeMask::new(dt),
+            class: vec![VertexClass::Manifold; dt.num_vertices()],
+            components: UnionFind::new(0),
+            non_manifold: 0,
+            interior: 0,
+            trace: None,
+            stamp: Vec::new(),
+            epoch: 0,
+        };
+        bd.boundary_and_classes(g);
+        bd
+    }
+
+    /// Union-find over the endpoints of every edge of `g` and of the boundary, and the
+    /// pocket-search stamps: what inflating needs, built only when it has work.
+    pub fn track_components(&mut self, g: &EdgeMask) {
+        let dt = self.dt;
+        self.components = UnionFind::new(dt.num_vertices());
+        for h in dt.edge_halfedges() {
+            if g.contains(h) || self.edges.contains(h) {
+                self.components.union(dt.origin(h), dt.dest(h));
+            }
+        }
+        self.stamp = vec![0; dt.num_triangles()];
+    }
+
+    /// `B` from the labels, and the classes of all vertices, in sequential sweeps over edges
+    /// and triangles: the same classes as [`Boundary::classify`] on every vertex, without
+    /// walking stars.
+    fn boundary_and_classes(&mut self, g: &EdgeMask) {
+        let dt = self.dt;
+        let n = dt.num_vertices();
+        let (mut transitions, mut dangling) = (vec![0u32; n], vec![0u32; n]);
+        let mut touches_out = vec![false; n];
+        for h in dt.edge_halfedges() {
+            let (left, right) = (self.left_is_in(h), self.right_is_in(h));
+            if g.contains(h) && (!left || !right) {
+                self.edges.set(dt, h, true);
+            }
+            let (a, b) = (dt.origin(h) as usize, dt.dest(h) as usize);
+            if left != right {
+                transitions[a] += 1;
+                transitions[b] += 1;
+            } else if !left && self.edges.contains(h) {
+                dangling[a] += 1;
+                dangling[b] += 1;
+            }
+            if !right {
+                // Covers hull edges, whose outside is exterior.
+                touches_out[a] = true;
+                touches_out[b] = true;
+            }
+        }
+        for (t, &inside) in self.inside.iter().enumerate() {
+            if !inside {
+                for h in 3 * t..3 * t + 3 {
+                    touches_out[dt.origin(h as u32) as usize] = true;
+                }
+            }
+        }
+        for v in 0..n {
+            let class = if !touches_out[v] {
+                VertexClass::Interior
+            } else if transitions[v] == 2 && dangling[v] == 0 {
+                VertexClass::Manifold
+            } else {
+                VertexClass::NonManifold
+            };
+            debug_assert_eq!(class, self.classify(v as u32));
+            self.class[v] = class;
+            self.count(class, 1);
+        }
+    }
+
+    /// Starts recording every label change from now on, and returns the trace's fixed part
+    /// (the triangles, graph `g`, the current labels and dangling edges; no steps yet).
+    pub fn start_trace(&mut self, g: &EdgeMask) -> Trace {
+        let dt = self.dt;
+        let triangles = (0..dt.num_triangles() as u32)
+            .map(|t| [0, 1, 2].map(|k| dt.input_index(dt.origin(3 * t + k))))
+            .collect();
+        let dangling = dt.to_input_edges(
+            dt.edge_halfedges()
+                .filter(|&h| self.edges.contains(h) && !self.left_is_in(h) && !self.right_is_in(h))
+                .map(|h| [dt.origin(h), dt.dest(h)]),
+        );
+        self.trace = Some(Vec::new());
+        Trace {
+            triangles,
+            graph: g.edges(dt),
+            initial_inside: self.inside.clone(),
+            dangling,
+            steps: Vec::new(),
+            inflated_at: 0,
+        }
+    }
+
+    /// Sets the label of triangle `t`, recording the change when tracing.
+    #[inline]
+    pub fn set_inside(&mut self, t: u32, inside: bool, phase: Phase) {
+        debug_assert_ne!(self.inside[t as usize], inside, "not a label change");
+        self.inside[t as usize] = inside;
+        if let Some(steps) = &mut self.trace {
+            steps.push(Step { triangle: t as usize, inside, phase });
+        }
+    }
+
+    /// Whether the triangle on the left of `h` is interior.
+    #[inline]
+    pub fn left_is_in(&self, h: u32) -> bool {
+        self.inside[(h / 3) as usize]
+    }
+
+    /// Whether the triangle on the right of `h` (across it) is interior; the outside of the
+    /// hull never is.
+    #[inline]
+    pub fn right_is_in(&self, h: u32) -> bool {
+        let t = self.dt.twin(h);
+        t != EMPTY && self.inside[(t / 3) as usize]
+    }
+
+    /// The class of `v` from its star (O(deg v)).
+    pub fn classify(&self, v: u32) -> VertexClass {
+        let (mut transitions, mut dangling, mut touches_out) = (0, 0, false);
+        let mut edge = |h: u32| {
+            let (left, right) = (self.left_is_in(h), self.right_is_in(h));
+            transitions += usize::from(left != right);
+            dangling += usize::from(!left && !right && self.edges.contains(h));
+            touches_out |= !left || !right;
+        };
+        let mut last = EMPTY;
+        for h in self.dt.outgoing(v) {
+            edge(h);
+            last = h;
+        }
+        // A hull vertex also has its incoming hull edge, `prev` of the last outgoing one.
+        if last != EMPTY && self.dt.twin(prev(last)) == EMPTY {
+            edge(prev(last));
+        }
+        if !touches_out {
+            VertexClass::Interior
+        } else if transitions == 2 && dangling == 0 {
+            VertexClass::Manifold
+        } else {
+            VertexClass::NonManifold
+        }
+    }
+
+    /// Recomputes the class of `v`, keeping the counters right.
+    pub fn reclassify(&mut self, v: u32) {
+        let new = self.classify(v);
+        let old = std::mem::replace(&mut self.class[v as usize], new);
+        if old != new {
+            self.count(old, -1);
+            self.count(new, 1);
+        }
+    }
+
+    fn count(&mut self, class: VertexClass, delta: isize) {
+        match class {
+            VertexClass::NonManifold => {
+                self.non_manifold = self.non_manifold.wrapping_add_signed(delta)
+            }
+            VertexClass::Interior => self.interior = self.interior.wrapping_add_signed(delta),
+            VertexClass::Manifold => {}
+        }
+    }
+
+    /// Interior vertices, by vertex number.
+    pub fn interior_vertices(&self) -> Vec<u32> {
+        (0..self.class.len() as u32)
+            .filter(|&v| self.class[v as usize] == VertexClass::Interior)
+            .collect()
+    }
+}

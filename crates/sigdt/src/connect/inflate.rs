@@ -1,0 +1,142 @@
+//! Inflating: make every boundary vertex manifold by turning exterior triangles interior.
+//!
+//! CONNECT2D [OM13] as used by SIG-CONNECT2D ([MOW22] §4.2.1, Algorithm 1, l. 11–15):
+//! candidate triangles are exterior triangles incident to a non-manifold vertex through a
+//! boundary edge; the one that least increases the total boundary length is taken (its new
+//! edges added, edges that become interior removed) until no non-manifold vertex is left.
+//!
+//! Cost of a triangle `t` (paper, with our decision): for each edge, `+len` if it is not on the boundary (it
+//! becomes boundary), `−len` if it is on the boundary with interior on the other side (it
+//! becomes interior), `0` if it is a boundary edge with exterior on both sides (dangling).
+//! Interior edges are removed at once, not at the end as in the paper's figure: the labels are
+//! the same, and the vertex tests need the current boundary. Enclosed pockets become
+//! interior as they form ([`super::pocket`]). Ties: lowest triangle number.
+//!
+//! # Guarantee
+//! Terminates after at most `#triangles` steps (each turns one exterior triangle interior for
+//! good) and cannot get stuck: a non-manifold vertex always has an exterior triangle beside
+//! one of its boundary edges; in the worst case the result is the convex hull. Afterwards
+//! the boundary is a set of vertex-disjoint simple polygons around disjoint disks, and every
+//! vertex is manifold or interior.
+//!
+//! # Complexity
+//! O(n log n) for Delaunay triangulations of bounded degree: each step re-examines the stars
+//! of three vertices.
+//!
+//! # References
+//! - [OM13] S. Ohrhallinger, S. Mudur. An efficient algorithm for determining an aesthetic
+//!   shape connecting unorganised 2D points. CGF 32(8), 2013.
+//! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+//! [OM13]: https://doi.org/10.1111/cgf.12227
+use super::boundary::{Boundary, VertexClass};
+use super::pocket::fill_pocket;
+use super::queue::CandidateQueue;
+use super::trace::Phase;
+use crate::delaunay::{next, prev, EMPTY};
+use crate::graph::EdgeMask;
+use crate::result::Stats;
+
+/// Runs inflating to completion on the boundary of graph `g`, updating `stats`.
+pub fn inflate(bd: &mut Boundary<'_>, g: &EdgeMask, stats: &mut Stats) {
+    stats.non_manifold_before = bd.non_manifold;
+    if bd.non_manifold == 0 {
+        return;
+    }
+    bd.track_components(g);
+    let mut queue = CandidateQueue::default();
+    for v in 0..bd.dt.num_vertices() as u32 {
+        if bd.class[v as usize] == VertexClass::NonManifold {
+            push_around(bd, &mut queue, v);
+        }
+    }
+    while bd.non_manifold > 0 {
+        let Some(c) = queue.pop() else { break };
+        if bd.inside[c.t as usize] || !is_candidate(bd, c.t) || cost(bd, c.t) != c.cost {
+            continue;
+        }
+        let touched = accept(bd, c.t, stats);
+        for &v in &touched {
+            bd.reclassify(v);
+        }
+        // Every triangle whose cost or candidacy changed has a touched vertex: it shares an
+        // edge with `t` or with a filled pocket triangle, or has a reclassified vertex. Its
+        // queued entry is stale now and is skipped when popped, so push it again.
+        for &v in &touched {
+            push_around(bd, &mut queue, v);
+        }
+    }
+    debug_assert_eq!(bd.non_manifold, 0, "inflating left non-manifold vertices");
+}
+
+/// Exterior triangle with a boundary edge that has a non-manifold end.
+fn is_candidate(bd: &Boundary<'_>, t: u32) -> bool {
+    (3 * t..3 * t + 3).any(|h| {
+        bd.edges.contains(h)
+            && (bd.class[bd.dt.origin(h) as usize] == VertexClass::NonManifold
+                || bd.class[bd.dt.dest(h) as usize] == VertexClass::NonManifold)
+    })
+}
+
+/// Change of total boundary length if `t` turns interior (edges in a fixed order, so the
+/// same triangle always gives the bit-identical cost).
+fn cost(bd: &Boundary<'_>, t: u32) -> f64 {
+    let mut delta = 0.0;
+    for h in 3 * t..3 * t + 3 {
+        if !bd.edges.contains(h) {
+            delta += bd.dt.length(h);
+        } else if bd.right_is_in(h) {
+            delta -= bd.dt.length(h);
+        }
+    }
+    delta
+}
+
+fn push_around(bd: &Boundary<'_>, queue: &mut CandidateQueue, v: u32) {
+    for h in bd.dt.outgoing(v) {
+        let t = h / 3;
+        if !bd.inside[t as usize] && is_candidate(bd, t) {
+            queue.push(t, cost(bd, t));
+        }
+    }
+}
+
+/// Turns `t` interior; returns the vertices whose star changed.
+fn accept(bd: &mut Boundary<'_>, t: u32, stats: &mut Stats) -> Vec<u32> {
+    let dt = bd.dt;
+    let on_boundary: Vec<u32> = (3 * t..3 * t + 3).filter(|&h| bd.edges.contains(h)).collect();
+    // §2.5: a single boundary edge `ab` whose apex `c` is already connected to it means the
+    // two new edges close a cycle around an exterior region.
+    let closes_cycle = on_boundary.len() == 1 && {
+        let ab = on_boundary[0];
+        let c = dt.origin(prev(ab));
+        bd.components.find(c) == bd.components.find(dt.origin(ab))
+    };
+    bd.set_inside(t, true, Phase::Inflate);
+    for h in 3 * t..3 * t + 3 {
+        if !bd.edges.contains(h) {
+            bd.edges.set(dt, h, true);
+            bd.components.union(dt.origin(h), dt.dest(h));
+        } else if bd.right_is_in(h) {
+            bd.edges.set(dt, h, false);
+        }
+    }
+    stats.inflated_triangles += 1;
+    let mut touched: Vec<u32> = (3 * t..3 * t + 3).map(|h| dt.origin(h)).collect();
+    if closes_cycle {
+        let ab = on_boundary[0];
+        let across = |h: u32| match dt.twin(h) {
+            EMPTY => EMPTY,
+            twin => twin / 3,
+        };
+        let pocket = fill_pocket(bd, across(next(ab)), across(prev(ab)));
+        if !pocket.is_empty() {
+            stats.pockets += 1;
+            touched.extend(pocket.iter().flat_map(|&p| (3 * p..3 * p + 3).map(|h| dt.origin(h))));
+            touched.sort_unstable();
+            touched.dedup();
+        }
+    }
+    touched
+}

@@ -1,0 +1,10 @@
+//! The plumbing every graph algorithm shares: edge sets over a triangulation, union-find,
+//! and the split of an edge set into chains.
+
+mod chains;
+mod edge_mask;
+mod union_find;
+
+pub use chains::{chains, Chain};
+pub use edge_mask::EdgeMask;
+pub use union_find::UnionFind;

@@ -1,0 +1,205 @@
+//! The line reader and the field splitting shared by the point and edge readers.
+//!
+//! Input is streamed line by line through a reused buffer, so memory stays bounded by the
+//! longest line, which is capped at [`MAX_LINE`] bytes. Blank lines are skipped, `#` starts
+//! a comment that runs to the end of the line, `\r\n` line endings and a UTF-8 byte-order
+//! mark are accepted, and every problem is an [`Error::Parse`] naming the file and the
+//! 1-based line.
+
+use std::io::{BufRead, ErrorKind};
+
+use crate::{Error, Result};
+
+/// The longest line a reader accepts, in bytes (1 MiB), not counting the line ending.
+pub const MAX_LINE: usize = 1 << 20;
+
+/// Lines of a stream, read into one reused buffer of at most [`MAX_LINE`] bytes.
+pub(super) struct Lines<'a, R> {
+    reader: R,
+    name: &'a str,
+    buf: Vec<u8>,
+    /// The byte range of the current line's content: comment and outer whitespace removed.
+    content: std::ops::Range<usize>,
+    /// 1-based number of the current line (0 before the first).
+    pub(super) number: usize,
+    /// Whether the next call to `next_content` returns the current line again.
+    unread: bool,
+}
+
+impl<'a, R: BufRead> Lines<'a, R> {
+    pub(super) fn new(reader: R, name: &'a str) -> Self {
+        let buf = Vec::with_capacity(256);
+        Lines { reader, name, buf, content: 0..0, number: 0, unread: false }
+    }
+
+    /// The next line with content, without its comment and outer whitespace; `None` at the
+    /// end. Only the content must be valid UTF-8.
+    pub(super) fn next_content(&mut self) -> Result<Option<&str>> {
+        if !self.unread {
+            loop {
+                if !self.read_line()? {
+                    return Ok(None);
+                }
+                self.content = content(&self.buf, self.number == 1);
+                if !self.content.is_empty() {
+                    break;
+                }
+            }
+        }
+        self.unread = false;
+        match std::str::from_utf8(&self.buf[self.content.clone()]) {
+            Ok(line) => Ok(Some(line)),
+            Err(_) => Err(self.error("line is not valid UTF-8".to_string())),
+        }
+    }
+
+    /// Makes the next `next_content` return the current line again (if there is one).
+    pub(super) fn unread(&mut self) {
+        self.unread = self.number > 0 && !self.content.is_empty();
+    }
+
+    /// The number of lines with content left, without checking them.
+    pub(super) fn count_rest(&mut self) -> Result<usize> {
+        let mut count = 0;
+        while self.read_line()? {
+            count += usize::from(!content(&self.buf, false).is_empty());
+        }
+        Ok(count)
+    }
+
+    /// Reads the next line into `buf`, without its `\n`; false at the end of input. Stops
+    /// with an error, before buffering it, as soon as a line exceeds [`MAX_LINE`] bytes.
+    fn read_line(&mut self) -> Result<bool> {
+        self.buf.clear();
+        let mut any = false;
+        loop {
+            let chunk = match self.reader.fill_buf() {
+                Ok(chunk) => chunk,
+                Err(e) if e.kind() == ErrorKind::Interrupted => continue,
+                Err(source) => return Err(Error::Io { path: self.name.to_string(), source }),
+            };
+            if chunk.is_empty() {
+                break;
+            }
+            any = true;
+            let (len, newline) = match chunk.iter().position(|&b| b == b'\n') {
+                Some(len) => (len, true),
+                None => (chunk.len(), false),
+            };
+            if self.buf.len() + len > MAX_LINE {
+                self.number += 1;
+                return Err(self.error(format!("line longer than {MAX_LINE} bytes")));
+            }
+            self.buf.extend_from_slice(&chunk[..len]);
+            self.reader.consume(len + usize::from(newline));
+            if newline {
+                break;
+            }
+        }
+        self.number += usize::from(any);
+        Ok(any)
+    }
+
+    /// A parse error on the current line (line 1 if nothing was read).
+    pub(super) fn error(&self, message: String) -> Error {
+        Error::Parse { path: self.name.to_string(), line: self.number.max(1), message }
+    }
+}
+
+/// The range of `line` without its `#` comment, outer ASCII whitespace (including `\r`) and,
+/// on the first line, a UTF-8 byte-order mark. Both ends fall on character boundaries.
+fn content(line: &[u8], first: bool) -> std::ops::Range<usize> {
+    let start = if first && line.starts_with(b"\xEF\xBB\xBF") { 3 } else { 0 };
+    let end = line.iter().position(|&b| b == b'#').unwrap_or(line.len()).max(start);
+    let body = &line[start..end];
+    let lead = body.iter().take_while(|b| b.is_ascii_whitespace()).count();
+    let trail = body[lead..].iter().rev().take_while(|b| b.is_ascii_whitespace()).count();
+    start + lead..end - trail
+}
+
+/// Exactly two fields of `line`, each read by `read`; `what` names them in errors.
+pub(super) fn pair<T: Copy + Default>(
+    line: &str,
+    what: &str,
+    read: impl Fn(&str) -> Result<T, String>,
+) -> Result<[T; 2], String> {
+    let (mut pair, mut count) = ([T::default(); 2], 0);
+    for field in fields(line) {
+        let v = read(field)?;
+        if let Some(slot) = pair.get_mut(count) {
+            *slot = v;
+        }
+        count += 1;
+    }
+    if count != 2 {
+        return Err(format!("expected 2 {what}, found {count}"));
+    }
+    Ok(pair)
+}
+
+/// A finite coordinate. Rust's parser accepts `nan` and `inf`, which are rejected here.
+pub(super) fn coordinate(field: &str) -> Result<f64, String> {
+    match field.parse::<f64>() {
+        Ok(v) if v.is_finite() => Ok(v),
+        Ok(_) => Err(format!("coordinate '{field}' is not finite")),
+        Err(_) if field.is_empty() => Err("empty field between commas".to_string()),
+        Err(_) => Err(format!("'{field}' is not a number")),
+    }
+}
+
+/// The fields of a plain line: comma-separated (each trimmed) if it has a comma, else
+/// separated by runs of spaces and tabs.
+pub(super) fn fields(line: &str) -> impl Iterator<Item = &str> {
+    let comma = line.contains(',');
+    let by_comma = comma.then(|| line.split(',').map(str::trim_ascii));
+    let by_space = (!comma).then(|| line.split_ascii_whitespace());
+    by_comma.into_iter().flatten().chain(by_space.into_iter().flatten())
+}
+
+/// The message for input with more than `max` points.
+pub(super) fn too_many(max: usize) -> String {
+    format!("more than the {max} points allowed (raise the limit with --max-points)")
+}
+
+#[cfg(test)]
+pub(super) mod tests {
+    use crate::io::{parse_edges, parse_points};
+    use crate::{Error, Result};
+    use std::io::{BufReader, Read};
+
+    use super::MAX_LINE;
+
+    /// The `line: message` of a parse error in the file `t.xy`.
+    pub(in crate::io) fn error(result: Result<impl std::fmt::Debug>) -> String {
+        match result.unwrap_err() {
+            Error::Parse { path, line, message } if path == "t.xy" => format!("{line}: {message}"),
+            e => panic!("not a parse error: {e}"),
+        }
+    }
+
+    /// A reader that counts the bytes taken from it.
+    struct Counting<R>(R, usize);
+    impl<R: Read> Read for Counting<R> {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            let n = self.0.read(buf)?;
+            self.1 += n;
+            Ok(n)
+        }
+    }
+
+    #[test]
+    fn long_lines_are_rejected_with_bounded_memory() {
+        let two_mib = std::io::repeat(b'1').take(2 << 20);
+        let reader = BufReader::new(two_mib);
+        assert_eq!(error(parse_points(reader, "t.xy", None)), "1: line longer than 1048576 bytes");
+        // An endless line: the reader stops right after the limit.
+        let mut endless = Counting(std::io::repeat(b'1'), 0);
+        let result = parse_edges(BufReader::new(&mut endless), "t.xy");
+        assert_eq!(error(result), "1: line longer than 1048576 bytes");
+        assert!(endless.1 <= MAX_LINE + (64 << 10));
+        // Exactly at the limit is fine.
+        let mut line = vec![b' '; MAX_LINE - 3];
+        line.extend_from_slice(b"1 2\n3 4");
+        assert_eq!(parse_points(&line[..], "t.xy", None).unwrap(), vec![[1.0, 2.0], [3.0, 4.0]]);
+    }
+}

@@ -1,0 +1,12 @@
+//! Streaming readers: plain `x y` point files, Dey's `.gtn` files and `i j` edge files.
+
+mod edges;
+mod gtn;
+pub(in crate::io) mod lines;
+mod points;
+
+pub use edges::{parse_edges, read_edges};
+pub use lines::MAX_LINE;
+pub use points::{
+    parse_points, parse_points_at_most, read_points, read_points_at_most, PointFormat,
+};

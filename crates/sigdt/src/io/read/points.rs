@@ -1,0 +1,203 @@
+//! Readers for point files (plain `x y` and Dey's `.gtn`) and edge files (`i j`).
+//!
+//! Input is streamed line by line through a reused buffer, so memory stays bounded by the
+//! longest line, which is capped at [`MAX_LINE`] bytes. Everywhere, blank lines are skipped,
+//! `#` starts a comment that runs to the end of the line, and `\r\n` line endings are
+//! accepted. Every problem is an [`Error::Parse`] naming the file and the 1-based line.
+//!
+//! - **Plain**: one point a line, two numbers separated by spaces or tabs, or by one comma
+//!   with optional spaces around it (`1.5 2`, `1.5,2`, `1.5, 2`). The first line may be a
+//!   header if none of its fields is a number (`x,y`).
+//! - **Gtn** (Dey's CurveRecon): a header `N 2 0 0`, then exactly `N` lines `index x y`
+//!   with indices `0, 1, ..., N-1` in order.
+//! - **Edges**: one edge a line, two point indices `i j` (ground-truth files).
+
+use std::fs::File;
+use std::io::{BufRead, BufReader};
+use std::path::Path;
+
+use super::gtn::{gtn, is_gtn_header};
+use super::lines::{coordinate, fields, pair, too_many, Lines};
+use crate::{Error, Point, Result};
+
+/// A point file format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PointFormat {
+    /// One point a line: `x y`, `x<TAB>y` or `x,y`, with an optional header line.
+    Plain,
+    /// Dey's CurveRecon format: a header `N 2 0 0`, then `N` lines `index x y`.
+    Gtn,
+}
+
+impl PointFormat {
+    /// The format implied by the file extension (case-insensitive): `.gtn` is
+    /// [`Gtn`](Self::Gtn); `.xy`, `.txt`, `.csv`, `.p2d` and `.pts` are [`Plain`](Self::Plain);
+    /// anything else is `None`, and readers then detect the format from the content.
+    pub fn from_path(path: &Path) -> Option<PointFormat> {
+        let ext = path.extension()?.to_str()?.to_ascii_lowercase();
+        match ext.as_str() {
+            "gtn" => Some(PointFormat::Gtn),
+            "xy" | "txt" | "csv" | "p2d" | "pts" => Some(PointFormat::Plain),
+            _ => None,
+        }
+    }
+}
+
+/// Reads the points of the file at `path`, in the format given by its extension
+/// ([`PointFormat::from_path`]) or else detected from its content.
+pub fn read_points(path: &Path) -> Result<Vec<Point>> {
+    read_points_at_most(path, usize::MAX)
+}
+
+/// [`read_points`], refusing files with more than `max_points` points (see
+/// [`parse_points_at_most`]).
+pub fn read_points_at_most(path: &Path, max_points: usize) -> Result<Vec<Point>> {
+    let name = path.display().to_string();
+    let file = File::open(path).map_err(|source| Error::Io { path: name.clone(), source })?;
+    let reader = BufReader::with_capacity(1 << 16, file);
+    parse_points_at_most(reader, &name, PointFormat::from_path(path), max_points)
+}
+
+/// Parses points from `reader` in `format`, or, with `None`, in the format detected from the
+/// first line with content: `.gtn` if it has exactly four integers and the second is 2,
+/// plain otherwise. `name` is the file name shown in errors (a path or `<stdin>`).
+///
+/// Empty input gives no points, except in the `.gtn` format, which needs its header.
+///
+/// ```
+/// use sigdt::io::parse_points;
+/// let points = parse_points("x,y\n0,0\n1.5, 2 # a comment\n".as_bytes(), "<stdin>", None);
+/// assert_eq!(points.unwrap(), vec![[0.0, 0.0], [1.5, 2.0]]);
+/// ```
+pub fn parse_points<R: BufRead>(
+    reader: R,
+    name: &str,
+    format: Option<PointFormat>,
+) -> Result<Vec<Point>> {
+    parse_points_at_most(reader, name, format, usize::MAX)
+}
+
+/// [`parse_points`], stopping with an error naming the line as soon as the input has more
+/// than `max_points` points (for `.gtn`, as soon as the header announces more), so that a
+/// huge input is refused after reading at most `max_points` lines of it.
+pub fn parse_points_at_most<R: BufRead>(
+    reader: R,
+    name: &str,
+    format: Option<PointFormat>,
+    max_points: usize,
+) -> Result<Vec<Point>> {
+    let mut lines = Lines::new(reader, name);
+    let format = match format {
+        Some(format) => format,
+        None => match lines.next_content()? {
+            Some(line) if is_gtn_header(line) => PointFormat::Gtn,
+            _ => PointFormat::Plain,
+        },
+    };
+    lines.unread();
+    match format {
+        PointFormat::Plain => plain(&mut lines, max_points),
+        PointFormat::Gtn => gtn(&mut lines, max_points),
+    }
+}
+
+/// Plain points: two numbers a line; the first line with content may be a header.
+fn plain<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result<Vec<Point>> {
+    let mut points = Vec::new();
+    let mut first = true;
+    while let Some(line) = lines.next_content()? {
+        let point = match xy(line) {
+            Ok(p) => Ok(Some(p)),
+            Err(_) if first && is_header(line) => Ok(None),
+            Err(message) => Err(message),
+        };
+        first = false;
+        points.extend(point.map_err(|message| lines.error(message))?);
+        if points.len() > max_points {
+            return Err(lines.error(too_many(max_points)));
+        }
+    }
+    Ok(points)
+}
+
+/// A plain point line: exactly two finite numbers.
+fn xy(line: &str) -> Result<Point, String> {
+    pair(line, "numbers (x y)", coordinate)
+}
+
+/// Whether a plain line is a header: none of its fields is a number.
+fn is_header(line: &str) -> bool {
+    fields(line).all(|field| field.parse::<f64>().is_err())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::read::lines::tests::error;
+
+    fn parse(text: &str, format: Option<PointFormat>) -> Result<Vec<Point>> {
+        parse_points(text.as_bytes(), "t.xy", format)
+    }
+
+    #[test]
+    fn point_limit_names_the_first_line_over_it() {
+        let text = "x y\n0 0\n1 0\n\n2 0\n3 0\n";
+        assert_eq!(parse_points_at_most(text.as_bytes(), "t.xy", None, 4).unwrap().len(), 4);
+        let err = parse_points_at_most(text.as_bytes(), "t.xy", None, 2).unwrap_err();
+        assert_eq!(err.to_string(), format!("t.xy:5: {}", too_many(2)));
+        let gtn = "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n";
+        let err = parse_points_at_most(gtn.as_bytes(), "t.gtn", None, 2).unwrap_err();
+        assert_eq!(err.to_string(), format!("t.gtn:1: {}", too_many(2)));
+    }
+
+    #[test]
+    fn plain_separators_comments_header_crlf() {
+        let text =
+            "\u{feff}# made by hand\r\nx, y\r\n\r\n1.5 2\r\n-3\t4e1 # trailing\n5,6\n 7 , -0.0 \n";
+        let expected = vec![[1.5, 2.0], [-3.0, 40.0], [5.0, 6.0], [7.0, -0.0]];
+        assert_eq!(parse(text, None).unwrap(), expected);
+        assert_eq!(parse(text, Some(PointFormat::Plain)).unwrap(), expected);
+        assert!(parse("x y\n", None).unwrap().is_empty());
+        assert!(parse("", None).unwrap().is_empty());
+        assert!(parse("\n  \n# only a comment\n", None).unwrap().is_empty());
+    }
+
+    #[test]
+    fn errors_name_line_and_token() {
+        let cases = [
+            ("0 0\nx y\n", None, "2: 'x' is not a number"),
+            ("x 1\n", None, "1: 'x' is not a number"),
+            ("\n1 abc\n", None, "2: 'abc' is not a number"),
+            ("1 2 3\n", None, "1: expected 2 numbers (x y), found 3"),
+            ("3 2 0\n", None, "1: expected 2 numbers (x y), found 3"),
+            ("1\n", None, "1: expected 2 numbers (x y), found 1"),
+            ("1,,2\n", None, "1: empty field between commas"),
+            ("1 2\nnan 0\n", None, "2: coordinate 'nan' is not finite"),
+            ("0 -inf\n", None, "1: coordinate '-inf' is not finite"),
+        ];
+        for (text, format, expected) in cases {
+            assert_eq!(error(parse(text, format)), expected, "{text:?}");
+        }
+        let latin1 = parse_points(&b"0 0\n1 \xE9\n"[..], "t.xy", None);
+        assert_eq!(error(latin1), "2: line is not valid UTF-8");
+        let comment = parse_points(&b"0 0 # caf\xE9\n"[..], "t.xy", None);
+        assert_eq!(comment.unwrap(), vec![[0.0, 0.0]]);
+    }
+
+    #[test]
+    fn formats_from_extensions() {
+        let format = |name: &str| PointFormat::from_path(Path::new(name));
+        assert_eq!(format("a/b.GTN"), Some(PointFormat::Gtn));
+        for name in ["a.xy", "a.txt", "a.CSV", "a.p2d", "a.pts"] {
+            assert_eq!(format(name), Some(PointFormat::Plain));
+        }
+        assert_eq!(format("a.dat"), None);
+        assert_eq!(format("xy"), None);
+    }
+
+    #[test]
+    fn read_points_names_missing_files() {
+        let err = read_points(Path::new("/nonexistent/p.xy")).unwrap_err();
+        assert!(matches!(err, Error::Io { ref path, .. } if path == "/nonexistent/p.xy"));
+    }
+}

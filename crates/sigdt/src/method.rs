@@ -1,0 +1,195 @@
+//! Which reconstruction method to run, its options, and the entry points that run it.
+//!
+//! [`reconstruct`] validates the input once (through [`Triangulation::new`]) and dispatches
+//! to the method's module: [`sig_connect2d`](crate::sig_connect2d), [`sig_auto`](crate::sig_auto)
+//! or a baseline. Every method returns a [`Reconstruction`] with the same invariants.
+
+use std::fmt;
+use std::str::FromStr;
+
+use crate::baselines;
+use crate::connect::{inflate_and_sculpt_traced, trace::Trace};
+use crate::delaunay::Triangulation;
+use crate::result::{degenerate_result, from_vertex_pairs, Reconstruction, Stats};
+use crate::{sig_auto, sig_connect2d, Point, Result};
+
+/// A reconstruction method. Spelled in kebab case on the command line and in Python
+/// (`"sig-connect2d"`); [`FromStr`] and [`Display`](fmt::Display) map between the two.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum Method {
+    /// SIG-CONNECT2D [MOW22](https://doi.org/10.1111/cgf.14654): SIGDT, then CONNECT2D's inflating and sculpting.
+    #[default]
+    SigConnect2d,
+    /// SIG-AUTO (ours, after [MOW22](https://doi.org/10.1111/cgf.14654)'s future work):
+    /// SIGDT2 per component; components whose spanning tree is a path are joined and closed
+    /// only where the gap is at most twice their longest edge, the rest is inflated and
+    /// sculpted on its own. Returns closed loops and open paths. Ignores `leaf_elimination`.
+    SigAuto,
+    /// CONNECT2D [OM13](https://doi.org/10.1111/cgf.12227): the same inflating and sculpting
+    /// started from BC₀ (EMST plus leaf edges). Ignores `leaf_elimination`.
+    Connect2d,
+    /// CRUST (Amenta, Bern, Eppstein 1998): Delaunay edges between samples that survive
+    /// adding the Voronoi vertices.
+    Crust,
+    /// NN-CRUST (Dey, Kumar 1999): nearest neighbours plus half neighbours.
+    NnCrust,
+    /// HNN-CRUST (Ohrhallinger, Mitchell, Wimmer 2016): mutual nearest and half-plane
+    /// neighbours, without a triangulation.
+    HnnCrust,
+    /// CRAWL (Parakkat, Muthuganapathy 2016): grow paths from nearest-neighbour seeds by
+    /// the nearest unvisited Delaunay neighbour.
+    Crawl,
+    /// PEEL (Parakkat, Methirumangalath, Muthuganapathy 2018): drop every triangle's longest
+    /// edge, then filter.
+    Peel,
+    /// The Euclidean minimum spanning tree: the trivial baseline for open curves.
+    Emst,
+}
+
+impl Method {
+    /// Every method, in the order they are listed in help texts.
+    pub const ALL: &'static [Method] = &[
+        Method::SigConnect2d,
+        Method::SigAuto,
+        Method::Connect2d,
+        Method::Crust,
+        Method::NnCrust,
+        Method::HnnCrust,
+        Method::Crawl,
+        Method::Peel,
+        Method::Emst,
+    ];
+
+    /// The kebab-case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::SigConnect2d => "sig-connect2d",
+            Method::SigAuto => "sig-auto",
+            Method::Connect2d => "connect2d",
+            Method::Crust => "crust",
+            Method::NnCrust => "nn-crust",
+            Method::HnnCrust => "hnn-crust",
+            Method::Crawl => "crawl",
+            Method::Peel => "peel",
+            Method::Emst => "emst",
+        }
+    }
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Method {
+    type Err = crate::Error;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Method::ALL.iter().copied().find(|m| m.name() == s).ok_or_else(|| {
+            let names: Vec<_> = Method::ALL.iter().map(|m| m.name()).collect();
+            crate::Error::InvalidOption(format!(
+                "unknown method '{s}' (expected one of: {})",
+                names.join(", ")
+            ))
+        })
+    }
+}
+
+/// Options of [`reconstruct`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Options {
+    /// The method to run.
+    pub method: Method,
+    /// Give every SIGDT leaf its shortest missing Delaunay edge before inflating (SIGDT2,
+    /// [MOW22](https://doi.org/10.1111/cgf.14654) §4.2.3). On by default: on the labelled
+    /// curves it is never worse, and better on manifold and sharp-corner cases
+    /// (`docs/algorithms.md` §3 has the numbers).
+    pub leaf_elimination: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { method: Method::SigConnect2d, leaf_elimination: true }
+    }
+}
+
+/// Reconstructs the curve(s) through `points` with the method and options in `options`.
+///
+/// Validates the input once (non-finite coordinates and impossible coordinate ranges are
+/// errors), then runs the method. Degenerate but valid input has a documented result; see
+/// [`Status`](crate::Status).
+///
+/// # Errors
+/// [`Error::NonFinite`](crate::Error::NonFinite), [`Error::CoordinateRange`](crate::Error::CoordinateRange)
+/// and [`Error::TooManyPoints`](crate::Error::TooManyPoints), from [`Triangulation::new`].
+pub fn reconstruct(points: &[Point], options: &Options) -> Result<Reconstruction> {
+    let dt = Triangulation::new(points)?;
+    Ok(reconstruct_on(&dt, options))
+}
+
+/// [`reconstruct`] on an existing triangulation of the points, so that one triangulation can
+/// serve several methods and graphs.
+pub fn reconstruct_on(dt: &Triangulation, options: &Options) -> Reconstruction {
+    let filter: fn(&Triangulation) -> Vec<[u32; 2]> = match options.method {
+        Method::SigConnect2d => {
+            return sig_connect2d::sig_connect2d_on(dt, options.leaf_elimination)
+        }
+        Method::SigAuto => return sig_auto::sig_auto_on(dt),
+        Method::Connect2d => return baselines::connect2d::connect2d_on(dt),
+        Method::Crust => baselines::crust::crust,
+        Method::NnCrust => baselines::nn_crust::nn_crust,
+        Method::HnnCrust => baselines::hnn_crust::hnn_crust,
+        Method::Crawl => baselines::crawl::crawl,
+        Method::Peel => baselines::peel::peel,
+        Method::Emst => baselines::emst::emst,
+    };
+    // The graph filters: the same degenerate results, then their edges read as chains.
+    degenerate_result(dt).unwrap_or_else(|| from_vertex_pairs(dt, filter(dt), Stats::default()))
+}
+
+/// [`reconstruct`], also returning the [`Trace`] of inflating and sculpting: every label
+/// change in order. The reconstruction is the same as [`reconstruct`]'s. The trace is
+/// `None` for methods other than SIG-CONNECT2D and CONNECT2D (SIG-AUTO inflates components
+/// on triangulations of their own, the graph filters do not inflate) and for degenerate
+/// input (no triangles).
+///
+/// # Errors
+/// As [`reconstruct`].
+pub fn reconstruct_traced(
+    points: &[Point],
+    options: &Options,
+) -> Result<(Reconstruction, Option<Trace>)> {
+    let dt = Triangulation::new(points)?;
+    Ok(reconstruct_traced_on(&dt, options))
+}
+
+/// [`reconstruct_traced`] on an existing triangulation of the points.
+pub fn reconstruct_traced_on(
+    dt: &Triangulation,
+    options: &Options,
+) -> (Reconstruction, Option<Trace>) {
+    if let Some(result) = degenerate_result(dt) {
+        return (result, None);
+    }
+    let (graph, leaf_edges_added) = match options.method {
+        Method::SigConnect2d => sig_connect2d::initial_graph(dt, options.leaf_elimination),
+        Method::Connect2d => baselines::connect2d::bc0(dt),
+        _ => return (reconstruct_on(dt, options), None),
+    };
+    inflate_and_sculpt_traced(dt, &graph, leaf_edges_added, true)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for &m in Method::ALL {
+            assert_eq!(m.to_string().parse::<Method>().unwrap(), m);
+        }
+        assert!("crust3".parse::<Method>().unwrap_err().to_string().contains("sig-connect2d"));
+    }
+}

@@ -1,0 +1,157 @@
+//! The result of a method that returns an arbitrary edge set (the classic baselines).
+//!
+//! CRUST, NN-CRUST, HNN-CRUST and the other graph filters return a set of edges, not a
+//! boundary: it may hold closed loops, open paths, isolated points and junctions. This
+//! module reads it as chains so that every method's result has the same shape:
+//!
+//! - a vertex of degree other than 2 is a *node*; each maximal run of edges between nodes
+//!   through degree-2 vertices is a *path* (a path may start and end at the same node when
+//!   it closes through a junction);
+//! - the edges left over form cycles of degree-2 vertices: the *loops*, counter-clockwise,
+//!   each starting at its smallest input index.
+//!
+//! The status is [`Polygon`](Status::Polygon) or [`Polygons`](Status::Polygons) when the
+//! loops pass through every distinct point, [`Curves`](Status::Curves) when every degree is
+//! at most 2 otherwise, and [`Network`](Status::Network) when some vertex has degree 3 or
+//! more.
+//!
+//! # Complexity
+//! O(m log m) for `m` edges (the sort), O(n + m) for the walk.
+use super::{Reconstruction, Stats, Status};
+use crate::delaunay::Triangulation;
+use crate::geometry::orient2d;
+use crate::graph::chains;
+
+/// The result whose edges are the vertex pairs `pairs` of `dt` (any order, repeats and
+/// self-pairs ignored), with `stats` as given except the point counts, filled in here.
+pub(crate) fn from_vertex_pairs(
+    dt: &Triangulation,
+    pairs: Vec<[u32; 2]>,
+    mut stats: Stats,
+) -> Reconstruction {
+    let n = dt.num_vertices();
+    let mut edges: Vec<[usize; 2]> = pairs
+        .into_iter()
+        .filter(|[a, b]| a != b)
+        .map(|[a, b]| [a.min(b) as usize, a.max(b) as usize])
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    let mut degree = vec![0usize; n];
+    edges.iter().flatten().for_each(|&v| degree[v] += 1);
+    let (mut loops, mut paths) = (Vec::new(), Vec::new());
+    for chain in chains(n, &edges, None) {
+        if chain.cycle {
+            loops.push(ccw_loop(dt, chain.vertices));
+            continue;
+        }
+        let mut p: Vec<usize> =
+            chain.vertices.into_iter().map(|v| dt.input_index(v as u32)).collect();
+        // Open paths start at their smaller end; a path closing through a junction starts
+        // there and runs towards its smaller neighbour.
+        if p.first() > p.last() || (p.first() == p.last() && p[1] > p[p.len() - 2]) {
+            p.reverse();
+        }
+        paths.push(p);
+    }
+    loops.sort_unstable();
+    paths.sort_unstable();
+    let max_degree = degree.iter().copied().max().unwrap_or(0);
+    let on_loops: usize = loops.iter().map(Vec::len).sum();
+    let status = if max_degree > 2 {
+        Status::Network
+    } else if paths.is_empty() && on_loops == n && !loops.is_empty() {
+        if loops.len() == 1 {
+            Status::Polygon
+        } else {
+            Status::Polygons
+        }
+    } else {
+        Status::Curves
+    };
+    stats.points = dt.input_len();
+    stats.distinct_points = n;
+    Reconstruction {
+        edges: dt.to_input_edges(edges.iter().map(|&[a, b]| [a as u32, b as u32])),
+        loops,
+        paths,
+        status,
+        duplicates: dt.duplicates().to_vec(),
+        stats,
+    }
+}
+
+/// The loop through vertices `cycle` as input indices, counter-clockwise, starting at its
+/// smallest index. The orientation is that of the corner at the lowest vertex (lowest `y`,
+/// then lowest `x`), which is convex in a simple polygon: one exact `orient2d`.
+fn ccw_loop(dt: &Triangulation, cycle: Vec<usize>) -> Vec<usize> {
+    let k = cycle.len();
+    let point = |a: usize| dt.point(cycle[a % k] as u32);
+    let lowest = (0..k)
+        .min_by(|&a, &b| {
+            let (p, q) = (point(a), point(b));
+            p[1].total_cmp(&q[1]).then(p[0].total_cmp(&q[0]))
+        })
+        .unwrap_or(0);
+    let clockwise =
+        k >= 3 && orient2d(point(lowest + k - 1), point(lowest), point(lowest + 1)) < 0.0;
+    let mut indices: Vec<usize> = cycle.into_iter().map(|v| dt.input_index(v as u32)).collect();
+    if clockwise {
+        indices.reverse();
+    }
+    let smallest = (0..k).min_by_key(|&a| indices[a]).unwrap_or(0);
+    indices.rotate_left(smallest);
+    indices
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::internals::check_reconstruction;
+
+    fn result(points: &[[f64; 2]], edges: &[[usize; 2]]) -> Reconstruction {
+        let dt = Triangulation::new(points).unwrap();
+        let vertex_of: Vec<u32> = {
+            let mut v = vec![0; points.len()];
+            for x in 0..dt.num_vertices() as u32 {
+                v[dt.input_index(x)] = x;
+            }
+            v
+        };
+        let pairs = edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
+        let rec = from_vertex_pairs(&dt, pairs, Stats::default());
+        check_reconstruction(points, &rec).unwrap();
+        rec
+    }
+
+    const SQUARE_AND_TAIL: [[f64; 2]; 6] =
+        [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [2.0, 1.0], [3.0, 1.5]];
+
+    #[test]
+    fn a_clockwise_cycle_becomes_a_ccw_polygon() {
+        let rec = result(&SQUARE_AND_TAIL[..4], &[[0, 3], [3, 2], [2, 1], [1, 0]]);
+        assert_eq!(rec.status, Status::Polygon);
+        assert_eq!(rec.loops, vec![vec![0, 1, 2, 3]]);
+    }
+
+    #[test]
+    fn open_paths_and_isolated_points_are_curves() {
+        let rec = result(&SQUARE_AND_TAIL, &[[2, 4], [4, 5], [0, 1]]);
+        assert_eq!(rec.status, Status::Curves);
+        assert_eq!(rec.paths, vec![vec![0, 1], vec![2, 4, 5]]);
+        assert!(rec.loops.is_empty());
+    }
+
+    #[test]
+    fn a_junction_makes_a_network_of_paths() {
+        let square = [[0, 1], [1, 2], [2, 3], [0, 3]];
+        let rec = result(&SQUARE_AND_TAIL, &[square.as_slice(), &[[2, 4], [4, 5]]].concat());
+        assert_eq!(rec.status, Status::Network);
+        assert!(rec.loops.is_empty());
+        // The square closes through the junction 2; the tail hangs off it.
+        assert_eq!(rec.paths, vec![vec![2, 1, 0, 3, 2], vec![2, 4, 5]]);
+        let reversed = result(&SQUARE_AND_TAIL, &[[4, 5], [2, 4], [0, 3], [2, 3], [0, 1], [1, 2]]);
+        assert_eq!(reversed.paths, rec.paths);
+        assert_eq!(rec.edges.len(), 6);
+    }
+}

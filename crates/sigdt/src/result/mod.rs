@@ -1,0 +1,134 @@
+//! What a reconstruction returns: edges, ordered loops and paths, a status and diagnostics;
+//! the documented results of degenerate input; reading any edge set as such a result; and
+//! the loops grouped into polygons with holes.
+
+mod degenerate;
+mod from_edges;
+mod polygons;
+
+pub(crate) use degenerate::degenerate_result;
+pub(crate) use from_edges::from_vertex_pairs;
+pub use polygons::Polygon;
+
+use crate::Edge;
+
+/// The result of [`reconstruct`](crate::reconstruct()).
+///
+/// All indices are 0-based indices into the caller's points. Exact duplicates take part
+/// through their lowest-index representative: they get no edges and are listed in
+/// [`duplicates`](Self::duplicates).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct Reconstruction {
+    /// Undirected edges `[i, j]`, `i < j`, sorted.
+    pub edges: Vec<Edge>,
+    /// Closed loops, each an ordered list of vertices (the edge from the last back to the
+    /// first is implied). Each loop runs counter-clockwise around the region it bounds and
+    /// starts at its smallest index; loops are sorted by that first index.
+    pub loops: Vec<Vec<usize>>,
+    /// Open paths, each an ordered list of vertices starting at its smaller end; sorted.
+    /// SIG-CONNECT2D only produces one, for collinear input or two distinct points; graph
+    /// filters such as CRUST produce them for open curves, and at junctions
+    /// ([`Status::Network`]) paths end at the junction (a path may start and end there).
+    pub paths: Vec<Vec<usize>>,
+    /// How the run ended.
+    pub status: Status,
+    /// `[duplicate, representative]` for every point equal to a lower-index point, sorted.
+    pub duplicates: Vec<Edge>,
+    /// Per-stage counts, for diagnostics and benchmarks.
+    pub stats: Stats,
+}
+
+/// How a reconstruction ended.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum Status {
+    /// One closed simple polygon through every distinct point.
+    #[default]
+    Polygon,
+    /// Several pairwise disjoint closed simple polygons that together pass through every
+    /// distinct point (the graph had several components, none inside another).
+    Polygons,
+    /// Sculpting found no candidate triangle while these points (input indices, sorted)
+    /// were still inside the boundary. The loops are simple and disjoint but miss them.
+    /// [MOW22](https://doi.org/10.1111/cgf.14654) §4.2.2: sculpting can fail when the Delaunay triangulation has no suitable
+    /// Hamiltonian cycle.
+    SculptingStuck {
+        /// The points not on any loop.
+        left_out: Vec<usize>,
+    },
+    /// The edges form vertex-disjoint loops and open paths (every point has at most two
+    /// edges), but not closed loops through every distinct point: some paths are open or
+    /// some points have no edge. Methods that filter a graph (CRUST and its kin) return this.
+    Curves,
+    /// Some point has three or more edges (a junction). Paths run between points whose
+    /// number of edges is not two; a path may start and end at the same junction.
+    Network,
+    /// All distinct points lie on one line: the result is the path through them in their
+    /// order along the line.
+    Collinear,
+    /// Fewer than three distinct points: two give the edge between them, one or none give
+    /// nothing.
+    TooFewPoints,
+}
+
+impl Status {
+    /// True when the loops pass through every distinct point (`Polygon` or `Polygons`).
+    pub fn is_manifold(&self) -> bool {
+        matches!(self, Status::Polygon | Status::Polygons)
+    }
+
+    /// A short kebab-case name: `polygon`, `polygons`, `sculpting-stuck`, `curves`,
+    /// `network`, `collinear`, `too-few-points`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Status::Polygon => "polygon",
+            Status::Polygons => "polygons",
+            Status::SculptingStuck { .. } => "sculpting-stuck",
+            Status::Curves => "curves",
+            Status::Network => "network",
+            Status::Collinear => "collinear",
+            Status::TooFewPoints => "too-few-points",
+        }
+    }
+}
+
+impl std::fmt::Display for Status {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Status::Polygon => f.write_str("one closed polygon through every point"),
+            Status::Polygons => f.write_str("several closed polygons through every point"),
+            Status::SculptingStuck { left_out } => write!(
+                f,
+                "sculpting got stuck: {} point(s) left inside the boundary",
+                left_out.len()
+            ),
+            Status::Curves => f.write_str("loops and open paths, not all points on loops"),
+            Status::Network => f.write_str("edges meet at junctions (a point with 3+ edges)"),
+            Status::Collinear => f.write_str("all points are collinear: one open path"),
+            Status::TooFewPoints => f.write_str("fewer than three distinct points"),
+        }
+    }
+}
+
+/// Per-stage counts of one run ([MOW22](https://doi.org/10.1111/cgf.14654) Algorithm 1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Stats {
+    /// Number of input points.
+    pub points: usize,
+    /// Number of distinct points.
+    pub distinct_points: usize,
+    /// Edges of the initial graph (SIGDT or SIGDT2).
+    pub graph_edges: usize,
+    /// Edges added by leaf elimination.
+    pub leaf_edges_added: usize,
+    /// Non-manifold vertices before inflating.
+    pub non_manifold_before: usize,
+    /// Triangles turned interior by inflating (pockets not included).
+    pub inflated_triangles: usize,
+    /// Enclosed exterior pockets filled during inflating.
+    pub pockets: usize,
+    /// Interior (isolated) vertices before sculpting.
+    pub interior_before_sculpting: usize,
+    /// Triangles removed by sculpting.
+    pub sculpted_triangles: usize,
+}

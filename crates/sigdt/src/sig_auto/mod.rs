@@ -1,0 +1,245 @@
+//! SIG-AUTO: SIG-CONNECT2D per component, with open curves kept open.
+//!
+//! SIG-CONNECT2D ([MOW22]) returns closed manifold polygons only; the paper names open and
+//! multiple curves as future work. SIG-AUTO starts from the same graph, SIGDT2 (SIGDT with
+//! leaf elimination), and decides per connected component:
+//!
+//! 1. **Chains.** If the component's minimum spanning tree (over its SIGDT2 edges) is a
+//!    path, the component is a *chain*: a piece of curve, open or closed. Chains are then
+//!    joined end to end, and closed into loops, along Delaunay edges no longer than twice
+//!    the longest edge of the chains they join ([`chain_join`], after
+//!    the non-uniformity condition `u < 2` of [MOW22] Theorem 1). What stays open is
+//!    returned as open paths.
+//! 2. **Everything else** (the spanning tree branches: extra SIGDT edges at sharp corners,
+//!    noise, dense clusters) is inflated and sculpted like SIG-CONNECT2D, but on the
+//!    component's own triangulation ([`closed_component`]), so
+//!    curves nested in one another stay separate loops. A loop is cut open at its longest
+//!    edge when that edge is more than twice the second longest. If some loop edge is more
+//!    than twice the longest edge of the component's SIGDT spanning forest (a leaf edge
+//!    reaching across), the component's SIGDT pieces are used as chains instead, when each
+//!    is a path with branches of at most four samples ([`spur_path`]).
+//!
+//! # Guarantees
+//! - The output is always a set of vertex-disjoint simple loops and simple open paths made
+//!   of Delaunay edges; no two edges cross.
+//! - A closed curve sampled with ρ < 1 and u < 2 ([MOW22] Theorem 1): SIGDT contains its
+//!   polygon; when that polygon is the component's spanning path plus one edge, the closing
+//!   edge satisfies the join bound and the curve comes back closed.
+//! - An open curve whose two end samples are more than twice the longest sample spacing
+//!   apart is never closed by a join; when its SIGDT2 component's spanning tree is the
+//!   sample path (dense sampling), it comes back as that path. A component that must be
+//!   inflated (its tree branches beyond what small branches explain) can still come back
+//!   closed.
+//! - Separate curves whose SIGDT2 components are separate (each curve sampled more densely
+//!   than the gap between them) are reconstructed independently, nested or not.
+//! - When the fallback applies (a loop of a component's own triangulation that is not a
+//!   Delaunay edge of all points, which could cross another component), the result is
+//!   SIG-CONNECT2D's.
+//!
+//! # Complexity
+//! O(n log n) time, O(n) memory.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+mod chain_join;
+mod closed_component;
+mod spanning_forests;
+mod spur_path;
+
+use crate::delaunay::Triangulation;
+use crate::geometry::distance;
+use crate::proximity::sigdt::TIE_SLACK;
+use crate::result::{degenerate_result, from_vertex_pairs, Reconstruction, Stats, Status};
+use crate::sig_connect2d::sig_connect2d_on;
+use chain_join::Chains;
+pub use chain_join::JOIN_RATIO;
+use closed_component::closed_component;
+use spanning_forests::Forests;
+
+/// Reconstructs `dt`'s points with SIG-AUTO (see the module docs).
+pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
+    sig_auto_with_join_ratio(dt, JOIN_RATIO)
+}
+
+/// SIG-AUTO with another ratio in place of [`JOIN_RATIO`] in all three places it bounds a
+/// gap: chain joins, loop cutting and the leaf-edge check. Not a user parameter: it exists
+/// so that the choice of the bound can be measured (`examples/join_ratio_sweep.rs`).
+pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstruction {
+    if let Some(result) = degenerate_result(dt) {
+        return result;
+    }
+    let forests = Forests::new(dt);
+    let (graph, sigdt, tree) = (&forests.graph, &forests.sigdt, &forests.sigdt2);
+    let mut stats = Stats {
+        graph_edges: graph.len(),
+        leaf_edges_added: forests.leaf_edges_added,
+        ..Stats::default()
+    };
+    let mut pairs: Vec<[u32; 2]> = Vec::new();
+    let mut left_out: Vec<usize> = Vec::new();
+    let mut chains = Chains::new(dt, join_ratio);
+    for (vertices, branched) in forests.components() {
+        if !branched {
+            let path = tree.walk(&vertices);
+            pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
+            chains.add(&path);
+            continue;
+        }
+        let Some(closed) = closed_component(dt, graph, &vertices, join_ratio) else {
+            return sig_connect2d_on(dt, true);
+        };
+        let bound = join_ratio * sigdt.longest_edge(dt, &vertices) * (1.0 + TIE_SLACK);
+        let within = |&[a, b]: &[u32; 2]| distance(dt.point(a), dt.point(b)) <= bound;
+        if !closed.edges.iter().all(within) {
+            if let Some(paths) = sigdt.pieces_as_paths(dt, &vertices) {
+                for path in paths {
+                    pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
+                    chains.add(&path);
+                }
+                continue;
+            }
+        }
+        pairs.extend(closed.edges);
+        left_out.extend(closed.left_out.iter().map(|&v| dt.input_index(v)));
+        add_counts(&mut stats, &closed.stats);
+    }
+    pairs.extend(chains.join());
+    let mut rec = from_vertex_pairs(dt, pairs, stats);
+    if !left_out.is_empty() {
+        left_out.sort_unstable();
+        rec.status = Status::SculptingStuck { left_out };
+    }
+    rec
+}
+
+/// Adds the inflating and sculpting counts of one component to `total`.
+fn add_counts(total: &mut Stats, part: &Stats) {
+    total.non_manifold_before += part.non_manifold_before;
+    total.inflated_triangles += part.inflated_triangles;
+    total.pockets += part.pockets;
+    total.interior_before_sculpting += part.interior_before_sculpting;
+    total.sculpted_triangles += part.sculpted_triangles;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::internals::check_reconstruction;
+    use crate::proximity::emst::minimum_spanning_forest;
+    use crate::Point;
+    use std::f64::consts::TAU;
+
+    fn arc(n: usize, radius: f64, centre: Point, from: f64, to: f64) -> Vec<Point> {
+        (0..n)
+            .map(|i| {
+                let a = from + (to - from) * i as f64 / (n - 1) as f64;
+                [centre[0] + radius * a.cos(), centre[1] + radius * a.sin()]
+            })
+            .collect()
+    }
+
+    fn circle(n: usize, radius: f64, centre: Point) -> Vec<Point> {
+        (0..n)
+            .map(|i| {
+                let a = TAU * i as f64 / n as f64;
+                [centre[0] + radius * a.cos(), centre[1] + radius * a.sin()]
+            })
+            .collect()
+    }
+
+    fn run(points: &[Point]) -> Reconstruction {
+        let rec = sig_auto_on(&Triangulation::new(points).unwrap());
+        check_reconstruction(points, &rec).unwrap();
+        rec
+    }
+
+    #[test]
+    fn a_circle_is_one_polygon() {
+        let rec = run(&circle(60, 1.0, [0.0, 0.0]));
+        assert_eq!(rec.status, Status::Polygon);
+        assert_eq!(rec.loops, vec![(0..60).collect::<Vec<_>>()]);
+    }
+
+    #[test]
+    fn an_open_arc_is_one_path_in_order() {
+        // Three quarters of a circle: SIG-CONNECT2D must close it, SIG-AUTO keeps it open.
+        let points = arc(40, 1.0, [0.0, 0.0], 0.0, 0.75 * TAU);
+        let rec = run(&points);
+        assert_eq!(rec.status, Status::Curves);
+        assert!(rec.loops.is_empty());
+        assert_eq!(rec.paths, vec![(0..40).collect::<Vec<_>>()]);
+        let dt = Triangulation::new(&points).unwrap();
+        assert!(sig_connect2d_on(&dt, true).status.is_manifold());
+    }
+
+    #[test]
+    fn a_gap_closes_only_within_twice_the_spacing() {
+        // 30 samples at spacing s on a circle of 32 (gap 3s, not closed) or 31 slots (gap 2s).
+        for (slots, closed) in [(31, true), (32, false), (34, false)] {
+            let points: Vec<Point> = circle(slots, 1.0, [0.0, 0.0]).into_iter().take(30).collect();
+            let rec = run(&points);
+            assert_eq!(rec.loops.len() == 1, closed, "{slots} slots: {:?}", rec.status);
+            assert_eq!(rec.paths.len() == 1, !closed, "{slots} slots");
+        }
+    }
+
+    #[test]
+    fn the_join_ratio_moves_the_bound() {
+        // The 3s gap of 30 samples on 32 slots closes only once the ratio exceeds 3; the 2s
+        // gap on 31 slots needs more than 2. `sig_auto_on` is the ratio 2.
+        let sample =
+            |slots| -> Vec<Point> { circle(slots, 1.0, [0.0, 0.0]).into_iter().take(30).collect() };
+        for (slots, ratio, closed) in
+            [(32, 3.5, true), (32, 2.5, false), (31, 2.0, true), (31, 1.5, false)]
+        {
+            let points = sample(slots);
+            let dt = Triangulation::new(&points).unwrap();
+            let rec = sig_auto_with_join_ratio(&dt, ratio);
+            check_reconstruction(&points, &rec).unwrap();
+            assert_eq!(rec.loops.len() == 1, closed, "{slots} slots, ratio {ratio}");
+        }
+        let dt = Triangulation::new(&sample(31)).unwrap();
+        assert_eq!(sig_auto_on(&dt), sig_auto_with_join_ratio(&dt, JOIN_RATIO));
+    }
+
+    #[test]
+    fn nested_circles_are_two_loops() {
+        // SIG-CONNECT2D swallows the inner circle into the outer disk's interior.
+        let mut points = circle(80, 2.0, [0.0, 0.0]);
+        points.extend(circle(40, 1.0, [0.1, 0.0]));
+        let rec = run(&points);
+        assert_eq!(rec.status, Status::Polygons);
+        assert_eq!(rec.loops.len(), 2);
+        assert_eq!(rec.loops[1], (80..120).collect::<Vec<_>>());
+        let dt = Triangulation::new(&points).unwrap();
+        assert_ne!(sig_connect2d_on(&dt, true).loops.len(), 2);
+    }
+
+    #[test]
+    fn loops_and_paths_together() {
+        let mut points = circle(50, 1.0, [0.0, 0.0]);
+        points.extend(arc(20, 1.0, [5.0, 0.0], 0.0, 2.0));
+        points.extend(arc(15, 1.0, [0.0, 5.0], 1.0, 3.0));
+        let rec = run(&points);
+        assert_eq!(rec.status, Status::Curves);
+        assert_eq!(rec.loops, vec![(0..50).collect::<Vec<_>>()]);
+        assert_eq!(rec.paths, vec![(50..70).collect::<Vec<_>>(), (70..85).collect::<Vec<_>>()]);
+    }
+
+    #[test]
+    fn a_spur_is_put_into_the_path() {
+        // A sample 0.6 off a line of unit spacing hangs off the spanning tree (its nearest
+        // point is 0.6 away, its other neighbours 1.17): the tree branches, and the result is
+        // still one path through every point, with the spur next to its anchor.
+        let mut points: Vec<Point> = (0..21).map(|i| [i as f64, 0.0]).collect();
+        points.push([10.0, 0.6]);
+        let rec = run(&points);
+        let dt = Triangulation::new(&points).unwrap();
+        let forest = minimum_spanning_forest(&dt, |_| true);
+        assert!(forest.degrees(&dt).iter().any(|&d| d > 2), "the test needs a branching tree");
+        assert!(rec.loops.is_empty(), "{:?}", rec.status);
+        assert_eq!(rec.paths.len(), 1);
+        assert_eq!(rec.paths[0].len(), points.len());
+        let at = rec.paths[0].iter().position(|&v| v == 21).unwrap();
+        assert!([at - 1, at + 1].iter().any(|&k| rec.paths[0][k] == 10));
+    }
+}

@@ -1,0 +1,172 @@
+//! The two spanning forests SIG-AUTO works on, and the components they define.
+//!
+//! SIGDT2 is SIGDT plus leaf-elimination edges. By the cycle property, the minimum spanning
+//! forest of SIGDT2 is the minimum spanning forest of (SIGDT's forest ∪ the leaf edges), so
+//! one sort of the SIGDT edges and a merge with the few leaf edges give both forests.
+//!
+//! # Complexity
+//! O(n log n) for the sort, O(n α(n)) otherwise.
+use super::spur_path::path_with_spurs;
+use crate::delaunay::Triangulation;
+use crate::geometry::distance;
+use crate::graph::{EdgeMask, UnionFind};
+use crate::proximity::emst::{kruskal, merge_sorted, sorted_by_length};
+use crate::proximity::leaf_elimination::eliminate_leaves_with_degrees;
+use crate::proximity::sigdt::sigdt_with_degrees;
+
+/// SIGDT2, the minimum spanning forests of SIGDT and of SIGDT2.
+pub(crate) struct Forests {
+    /// SIGDT2: SIGDT with leaf elimination.
+    pub(crate) graph: EdgeMask,
+    /// Edges leaf elimination added.
+    pub leaf_edges_added: usize,
+    /// The minimum spanning forest of SIGDT: the sample spacing of every SIGDT piece.
+    pub sigdt: Tree,
+    /// The minimum spanning forest of SIGDT2.
+    pub sigdt2: Tree,
+    sigdt2_pairs: Vec<[u32; 2]>,
+    vertices: usize,
+}
+
+impl Forests {
+    /// The forests of a proper triangulation.
+    pub(crate) fn new(dt: &Triangulation) -> Forests {
+        let (sigdt, degree) = sigdt_with_degrees(dt);
+        let mut graph = sigdt.clone();
+        let leaf_edges_added = eliminate_leaves_with_degrees(dt, &mut graph, degree);
+        let sigdt_edges = dt.edge_halfedges().filter(|&h| sigdt.contains(h));
+        let sigdt_forest = kruskal(dt, sorted_by_length(dt, sigdt_edges));
+        let leaf_edges = sorted_by_length(
+            dt,
+            dt.edge_halfedges().filter(|&h| graph.contains(h) && !sigdt.contains(h)),
+        );
+        let sigdt2_edges = kruskal(dt, merge_sorted(dt, &sigdt_forest, &leaf_edges));
+        Forests {
+            sigdt: Tree::new(dt, &sigdt_forest),
+            sigdt2: Tree::new(dt, &sigdt2_edges),
+            graph,
+            leaf_edges_added,
+            sigdt2_pairs: sigdt2_edges.iter().map(|&h| [dt.origin(h), dt.dest(h)]).collect(),
+            vertices: dt.num_vertices(),
+        }
+    }
+
+    /// The connected components of SIGDT2 (vertices in increasing order, components by
+    /// their representative) and whether the component's spanning tree branches (some
+    /// vertex has three or more tree edges).
+    pub(crate) fn components(&self) -> Vec<(Vec<u32>, bool)> {
+        let n = self.vertices;
+        let mut uf = UnionFind::new(n);
+        for &[a, b] in &self.sigdt2_pairs {
+            uf.union(a, b);
+        }
+        let root: Vec<u32> = (0..n as u32).map(|v| uf.find(v)).collect();
+        let mut members: Vec<(Vec<u32>, bool)> = vec![(Vec::new(), false); n];
+        for v in 0..n as u32 {
+            let entry = &mut members[root[v as usize] as usize];
+            entry.0.push(v);
+            entry.1 |= self.sigdt2.degree(v) > 2;
+        }
+        members.into_iter().filter(|(m, _)| !m.is_empty()).collect()
+    }
+}
+
+/// A forest over the triangulation's vertices as compressed adjacency lists.
+pub(crate) struct Tree {
+    start: Vec<usize>,
+    entries: Vec<u32>,
+}
+
+impl Tree {
+    /// The forest with the half-edges `forest`.
+    pub(crate) fn new(dt: &Triangulation, forest: &[u32]) -> Tree {
+        let n = dt.num_vertices();
+        let edges: Vec<[u32; 2]> = forest.iter().map(|&h| [dt.origin(h), dt.dest(h)]).collect();
+        let mut start = vec![0; n + 1];
+        for &[a, b] in &edges {
+            start[a as usize + 1] += 1;
+            start[b as usize + 1] += 1;
+        }
+        for v in 0..n {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut entries = vec![0; 2 * edges.len()];
+        for &[a, b] in &edges {
+            for (x, y) in [(a, b), (b, a)] {
+                entries[fill[x as usize]] = y;
+                fill[x as usize] += 1;
+            }
+        }
+        Tree { start, entries }
+    }
+
+    /// The tree neighbours of `v`.
+    pub(crate) fn neighbours(&self, v: u32) -> &[u32] {
+        &self.entries[self.start[v as usize]..self.start[v as usize + 1]]
+    }
+
+    /// The longest tree edge at any of `vertices`.
+    pub(crate) fn longest_edge(&self, dt: &Triangulation, vertices: &[u32]) -> f64 {
+        vertices
+            .iter()
+            .flat_map(|&v| self.neighbours(v).iter().map(move |&w| (v, w)))
+            .map(|(v, w)| distance(dt.point(v), dt.point(w)))
+            .fold(0.0, f64::max)
+    }
+
+    /// The number of tree edges at `v`.
+    pub(crate) fn degree(&self, v: u32) -> usize {
+        self.neighbours(v).len()
+    }
+
+    /// The vertices of a path-shaped component in order from one end.
+    pub(crate) fn walk(&self, vertices: &[u32]) -> Vec<u32> {
+        let start = vertices.iter().copied().find(|&v| self.degree(v) <= 1).unwrap_or(vertices[0]);
+        let mut path = vec![start];
+        let (mut previous, mut current) = (u32::MAX, start);
+        while let Some(&step) = self.neighbours(current).iter().find(|&&w| w != previous) {
+            if path.len() == vertices.len() {
+                break;
+            }
+            path.push(step);
+            previous = current;
+            current = step;
+        }
+        path
+    }
+
+    /// The trees of this forest that hold `vertices` (which must be unions of whole trees),
+    /// each as a path (walked, or with its small branches threaded in), or `None` if some
+    /// tree is not a path with small branches ([`path_with_spurs`]).
+    pub(crate) fn pieces_as_paths(
+        &self,
+        dt: &Triangulation,
+        vertices: &[u32],
+    ) -> Option<Vec<Vec<u32>>> {
+        let tree = self;
+        let mut seen: std::collections::HashSet<u32> = Default::default();
+        let mut paths = Vec::new();
+        for &v in vertices {
+            if !seen.insert(v) {
+                continue;
+            }
+            let mut piece = vec![v];
+            let mut k = 0;
+            while k < piece.len() {
+                for &w in tree.neighbours(piece[k]) {
+                    if seen.insert(w) {
+                        piece.push(w);
+                    }
+                }
+                k += 1;
+            }
+            if piece.iter().all(|&x| tree.degree(x) <= 2) {
+                paths.push(tree.walk(&piece));
+            } else {
+                paths.push(path_with_spurs(dt, &piece, |x| tree.neighbours(x).to_vec())?);
+            }
+        }
+        Some(paths)
+    }
+}
