@@ -87,9 +87,9 @@ bench-python: py-build build
 	$(VPY) python/bench/bench_python.py
 
 ## report: the side-by-side evaluation in docs/report/ (issue 4): every method and
-## shapely.concave_hull on ../shared/data/curves (or DATA=...), then the noise, outlier,
+## shapely.concave_hull on data/curves (or DATA=...), then the noise, outlier,
 ## lfs-noise and eps sweeps. Takes a few minutes on 2 cores.
-DATA ?= ../shared/data/curves
+DATA ?= data/curves
 REPORT := docs/report
 SWEEPS := $(TARGET_DIR)/sweeps
 report: build py-build

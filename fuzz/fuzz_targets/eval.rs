@@ -1,10 +1,10 @@
 //! Small point sets (as in the `reconstruct` target, at most 32 points) and arbitrary edge
 //! lists (self loops, repeats, indices out of range) through the metrics:
-//! `sigdt::eval::evaluate`, `graph_epsilon` and `overlap`. Errors are fine, panics are not.
+//! `sigdt_lab::eval::evaluate`, `graph_epsilon` and `overlap`. Errors are fine, panics are not.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use sigdt::eval::{evaluate, graph_epsilon, overlap};
+use sigdt_lab::eval::{evaluate, graph_epsilon, overlap};
 
 fuzz_target!(|data: &[u8]| {
     let Some((points, result, gt)) = sigdt_fuzz::eval_input(data) else { return };

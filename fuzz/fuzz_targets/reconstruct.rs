@@ -1,12 +1,13 @@
 //! Arbitrary points (raw f64 bits, or structured degenerate sets; see `sigdt_fuzz`) through
 //! `sigdt::reconstruct` with every method, and leaf elimination on and off for
 //! SIG-CONNECT2D (the only method that reads it). Either every method fails with the same
-//! error, or every result passes `sigdt::testing::check_reconstruction`. The traced run of
+//! error, or every result passes `sigdt::internals::check_reconstruction`. The traced run of
 //! the inflating methods returns the same reconstruction.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use sigdt::{reconstruct, reconstruct_traced, testing::check_reconstruction, Method, Options};
+use sigdt::internals::check_reconstruction;
+use sigdt::{reconstruct, reconstruct_traced, Method, Options};
 
 fuzz_target!(|data: &[u8]| {
     let points = sigdt_fuzz::points(data);

@@ -10,8 +10,8 @@
 //! where a loop is cut open. This example replaces that ratio (in all three places, through
 //! `sig_auto_with_join_ratio`) and counts exact reconstructions per category of the
 //! labelled folder `DATA_DIR` (default the repository's `data/curves`: `index.csv`,
-//! `NAME.xy`, `NAME.gt`), plus a `manifold eps<1` row. A smaller ratio keeps more open curves open and
-//! closes fewer closed ones; the table shows how much of each a ratio buys. With
+//! `NAME.xy`, `NAME.gt`), plus a `manifold eps<1` row. A smaller ratio keeps more open curves
+//! open and closes fewer closed ones; the table shows how much of each a ratio buys. With
 //! `--list CATEGORY`, the cases of that category that no ratio reconstructs go to stderr.
 use sigdt::internals::{sig_auto_with_join_ratio, JOIN_RATIO};
 use sigdt::Triangulation;

@@ -62,3 +62,20 @@ pub enum Error {
 
 /// `Result` with [`Error`] as the default error type.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// The entry of `all` called `s`, or [`Error::InvalidOption`] naming `what` and listing every
+/// name: the one parser behind the kebab-case names of methods and formats.
+pub fn find_by_name<T: Copy>(
+    all: &[T],
+    name: impl Fn(T) -> &'static str,
+    s: &str,
+    what: &str,
+) -> Result<T> {
+    all.iter().copied().find(|&x| name(x) == s).ok_or_else(|| {
+        let names: Vec<_> = all.iter().map(|&x| name(x)).collect();
+        Error::InvalidOption(format!(
+            "unknown {what} '{s}' (expected one of: {})",
+            names.join(", ")
+        ))
+    })
+}

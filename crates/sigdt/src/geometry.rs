@@ -6,6 +6,9 @@
 /// A point in the plane.
 pub type Point = [f64; 2];
 
+/// An undirected edge `[i, j]` between input point indices, `i < j`.
+pub type Edge = [usize; 2];
+
 /// Euclidean distance between `p` and `q`, computed as `sqrt(dx² + dy²)`.
 ///
 /// Callers pass coordinates that [`crate::delaunay::Triangulation`] has brought into a safe

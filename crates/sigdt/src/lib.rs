@@ -41,15 +41,12 @@ pub mod sig_connect2d;
 pub use connect::trace::{Phase, Step, Trace};
 pub use delaunay::Triangulation;
 pub use error::{Error, Result};
-pub use geometry::Point;
+pub use geometry::{Edge, Point};
 pub use method::{
     reconstruct, reconstruct_on, reconstruct_traced, reconstruct_traced_on, Method, Options,
 };
 pub use proximity::{nearest_neighbour_distances, proximity_graph, proximity_graph_on, GraphKind};
 pub use result::{Polygon, Reconstruction, Stats, Status};
-
-/// An undirected edge `[i, j]` between input point indices, `i < j`.
-pub type Edge = [usize; 2];
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

@@ -10,15 +10,18 @@ use std::str::FromStr;
 use crate::baselines;
 use crate::connect::{inflate_and_sculpt_traced, trace::Trace};
 use crate::delaunay::Triangulation;
+use crate::error::Result;
+use crate::geometry::Point;
 use crate::result::{degenerate_result, from_vertex_pairs, Reconstruction, Stats};
-use crate::{sig_auto, sig_connect2d, Point, Result};
+use crate::{sig_auto, sig_connect2d};
 
 /// A reconstruction method. Spelled in kebab case on the command line and in Python
 /// (`"sig-connect2d"`); [`FromStr`] and [`Display`](fmt::Display) map between the two.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[non_exhaustive]
 pub enum Method {
-    /// SIG-CONNECT2D [MOW22](https://doi.org/10.1111/cgf.14654): SIGDT, then CONNECT2D's inflating and sculpting.
+    /// SIG-CONNECT2D [MOW22](https://doi.org/10.1111/cgf.14654): SIGDT, then CONNECT2D's
+    /// inflating and sculpting.
     #[default]
     SigConnect2d,
     /// SIG-AUTO (ours, after [MOW22](https://doi.org/10.1111/cgf.14654)'s future work):
@@ -84,16 +87,10 @@ impl fmt::Display for Method {
 }
 
 impl FromStr for Method {
-    type Err = crate::Error;
+    type Err = crate::error::Error;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Method::ALL.iter().copied().find(|m| m.name() == s).ok_or_else(|| {
-            let names: Vec<_> = Method::ALL.iter().map(|m| m.name()).collect();
-            crate::Error::InvalidOption(format!(
-                "unknown method '{s}' (expected one of: {})",
-                names.join(", ")
-            ))
-        })
+        crate::error::find_by_name(Method::ALL, Method::name, s, "method")
     }
 }
 
@@ -122,8 +119,8 @@ impl Default for Options {
 /// [`Status`](crate::Status).
 ///
 /// # Errors
-/// [`Error::NonFinite`](crate::Error::NonFinite), [`Error::CoordinateRange`](crate::Error::CoordinateRange)
-/// and [`Error::TooManyPoints`](crate::Error::TooManyPoints), from [`Triangulation::new`].
+/// [`NonFinite`](crate::Error::NonFinite), [`CoordinateRange`](crate::Error::CoordinateRange)
+/// and [`TooManyPoints`](crate::Error::TooManyPoints), from [`Triangulation::new`].
 pub fn reconstruct(points: &[Point], options: &Options) -> Result<Reconstruction> {
     let dt = Triangulation::new(points)?;
     Ok(reconstruct_on(&dt, options))

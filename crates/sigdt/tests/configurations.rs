@@ -28,12 +28,8 @@ fn class_of(bd: &Boundary<'_>, dt: &Triangulation, input: usize) -> VertexClass 
 }
 
 fn circle(k: usize, centre: Point, r: f64) -> Vec<Point> {
-    (0..k)
-        .map(|i| {
-            let a = i as f64 * std::f64::consts::TAU / k as f64;
-            [centre[0] + r * a.cos(), centre[1] + r * a.sin()]
-        })
-        .collect()
+    let polygon = sigdt::samplers::regular_polygon(k, r).points;
+    polygon.into_iter().map(|[x, y]| [centre[0] + x, centre[1] + y]).collect()
 }
 
 fn run(points: &[Point]) -> sigdt::Reconstruction {

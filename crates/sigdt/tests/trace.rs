@@ -9,12 +9,8 @@ use sigdt::{reconstruct, reconstruct_traced, Method, Options, Phase, Point, Reco
 use sigdt::{Edge, Stats, Trace, Triangulation};
 
 fn circle(k: usize, centre: Point, r: f64) -> Vec<Point> {
-    (0..k)
-        .map(|i| {
-            let a = i as f64 * std::f64::consts::TAU / k as f64;
-            [centre[0] + r * a.cos(), centre[1] + r * a.sin()]
-        })
-        .collect()
+    let polygon = sigdt::samplers::regular_polygon(k, r).points;
+    polygon.into_iter().map(|[x, y]| [centre[0] + x, centre[1] + y]).collect()
 }
 
 /// Inputs with every kind of run: no work, inflating, pockets, sculpting, stuck sculpting.

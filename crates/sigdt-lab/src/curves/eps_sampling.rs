@@ -1,6 +1,6 @@
 //! ε-sampling of a cubic Bézier chain with a start offset: the sampler of the Bézier
 //! experiment of \[MOW22\] (Fig. 14), following the behaviour of the benchmark authors'
-//! `sampling2d` \[OMW21\] as specified in `ALGORITHMS.md` 4.4 and 4.9.
+//! `sampling2d` \[OMW21\] as specified in `docs/algorithms.md` §4.4 and §4.9.
 //!
 //! # Steps
 //! 1. **Dense curve** ([`lfs`]): every segment is evaluated at [`DENSE_STEPS`] uniform

@@ -1,6 +1,6 @@
 //! Symmetric difference of area between a reconstruction and the ground truth.
 //!
-//! ALGORITHMS.md §4.6, after [MOW22] (Figs. 10, 11, 19), who used Boost.Geometry's
+//! `docs/algorithms.md` §4.6, after [MOW22] (Figs. 10, 11, 19), who used Boost.Geometry's
 //! `sym_difference`, whose rings are implicitly closed:
 //!
 //! 1. Each edge set is cut into maximal chains: cycles of degree-2 vertices and paths between

@@ -1,7 +1,7 @@
 //! Distance errors between a reconstruction and the ground-truth polygon.
 //!
-//! ALGORITHMS.md §4.5, after the "RMS error between the reconstructed curve and the original"
-//! of [MOW22] (Figs. 14, 16–18):
+//! `docs/algorithms.md` §4.5, after the "RMS error between the reconstructed curve and the
+//! original" of [MOW22] (Figs. 14, 16–18):
 //!
 //! 1. `diag` = diagonal of the ground truth's bounding box, `h = diag / 2000`.
 //! 2. Both edge sets are sampled by arc length: every distinct vertex once, plus
@@ -41,7 +41,7 @@ pub struct DistanceErrors {
     pub hausdorff: f64,
 }
 
-/// Samples per bounding-box diagonal (ALGORITHMS.md §4.5).
+/// Samples per bounding-box diagonal (`docs/algorithms.md` §4.5).
 pub const SAMPLES_PER_DIAGONAL: f64 = 2000.0;
 
 /// The most edge-interior samples taken of one edge set, about a million (see

@@ -5,7 +5,7 @@
 //! the smallest disk centred at `x` meeting two disjoint features). Only the labelled set is
 //! known here, so `x` runs over the ground-truth polygon. Variants ([`EpsilonVariant`]):
 //!
-//! - `Graph`, ALGORITHMS.md §4.4 variant E: every ground-truth edge is a feature,
+//! - `Graph`, `docs/algorithms.md` §4.4 variant E: every ground-truth edge is a feature,
 //!   `lfs(x)` = distance from `x` on edge `ab` to the nearest vertex other than `a`, `b` or
 //!   edge touching neither. A dense uniform sample of a circle gives about 1/3 whatever its
 //!   density (half a spacing over one and a half).
@@ -29,27 +29,8 @@
 //! are ignored).
 //!
 //! # Agreement with the data set
-//! Measured by `examples/epsilon_check.rs` on the 522 cases of `data/curves` against their
-//! `epsilon` column; "same class" counts cases on the same side of `eps < 1`:
-//!
-//! | category | cases | same class, `Arcs` 60° (default) | same class, `Graph` (E) | corr. of logs, Arcs / E |
-//! |---|---:|---:|---:|---:|
-//! | manifold | 110 | 83 | 85 | 0.75 / 0.58 |
-//! | sharp | 100 | 92 | 77 | 0.65 / 0.52 |
-//! | open | 60 | 51 | 48 | 0.51 / 0.39 |
-//! | multiple | 60 | 55 | 45 | 0.63 / 0.29 |
-//! | noisy | 50 | 37 | 39 | 0.56 / 0.32 |
-//! | outliers | 40 | 30 | 28 | 0.13 / 0.02 |
-//! | bezier | 100 | 100 | 100 | 1.00 / 0.98 |
-//! | large | 2 | 2 | 2 | - |
-//! | all | 522 | 450 | 424 | 0.56 / 0.36 |
-//!
-//! The median ratio ours / reference is 1.00 for `Arcs` (0.95 on manifold, where the
-//! polygon's chords and its samples' Voronoi vertices both make our value smaller than the
-//! smooth curve's), 1.37 for `Graph`. `Arcs` with 45° also classifies 450 the same way
-//! (87 manifold, 89 sharp), with 30° 441 and with 90° 388. Most large disagreements are
-//! reference values far above 2 on self-approaching SVG curves, or noisy cases (the
-//! reference is the clean sample's epsilon).
+//! `examples/epsilon_check.rs` compares both variants with the `epsilon` column of
+//! `data/curves`; the numbers are in `docs/evaluation.md` (section "Epsilon").
 //!
 //! # Degenerate input
 //! No edge gives 0. A point of the polygon touching a disjoint feature (a self-touching
@@ -59,7 +40,7 @@
 //! # Complexity
 //! O(n log n + 64 m q) for `m` edges, with `q` the cost of a query: O(log n) on well-spread
 //! curves (the searches stop once the ratio cannot beat 95 % of the running maximum). The
-//! 64 samples per edge dominate: about 5 s for the 100 000-point spiral of the data set.
+//! 64 samples per edge dominate.
 //!
 //! # References
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
@@ -72,7 +53,7 @@ use sigdt::{Edge, Point, Result};
 /// Which local feature size [`epsilon`] divides by; see the module docs.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum EpsilonVariant {
-    /// ALGORITHMS.md §4.4 variant E: distance to features disjoint from the edge.
+    /// `docs/algorithms.md` §4.4 variant E: distance to features disjoint from the edge.
     Graph,
     /// Ruppert's literal definition on the ground-truth graph (always ≥ 1 on a polygon).
     Ruppert,
@@ -89,7 +70,7 @@ impl Default for EpsilonVariant {
     }
 }
 
-/// Parameters per edge evaluated before refinement (ALGORITHMS.md §4.4 step 3).
+/// Parameters per edge evaluated before refinement (`docs/algorithms.md` §4.4 step 3).
 const SAMPLES: usize = 64;
 /// Edges whose samples reach this fraction of the running maximum are refined.
 const REFINE: f64 = 0.95;

@@ -1,7 +1,7 @@
 //! Exact reconstruction: is the result's undirected edge set the ground truth's?
 //!
-//! ALGORITHMS.md §4.2 (the operational reading of [MOW22] Table 2): both lists are normalised
-//! to `[min, max]` pairs and deduplicated, then compared as sets. A self loop `[i, i]` in the
+//! `docs/algorithms.md` §4.2 (the operational reading of [MOW22] Table 2): both lists are
+//! normalised to `[min, max]` pairs and deduplicated, then compared as sets. A self loop `[i, i]` in the
 //! result is an extra edge (so the result is not exact); one in the ground truth is a missing
 //! edge no result can supply. Indices are not checked against a point count here: the
 //! comparison needs no points, and an index out of range simply fails to match.

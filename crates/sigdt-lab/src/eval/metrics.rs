@@ -16,7 +16,7 @@ use sigdt::{Edge, Point, Result};
 /// Every metric of one reconstruction against its ground truth.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Metrics {
-    /// The result's edge set equals the ground truth's (ALGORITHMS.md §4.2).
+    /// The result's edge set equals the ground truth's (`docs/algorithms.md` §4.2).
     pub exact: bool,
     /// Number of ground-truth edges the result lacks.
     pub missing: usize,

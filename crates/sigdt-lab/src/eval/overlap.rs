@@ -1,6 +1,6 @@
 //! How much of the ground truth each proximity graph contains, and how they overlap.
 //!
-//! The statistics of [MOW22] §5 (ALGORITHMS.md §4.10), for one labelled point set; average
+//! The statistics of [MOW22] §5 (`docs/algorithms.md` §4.10), for one labelled point set; average
 //! them over sets yourself (the paper takes the arithmetic mean of per-set percentages):
 //!
 //! | field | formula | paper (mean over 1257 manifold sets) |

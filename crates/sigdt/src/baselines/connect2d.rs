@@ -3,7 +3,7 @@
 //! [OM13]: BC₀ approximates a minimum-length boundary that interpolates every point with
 //! degree ≥ 2 in one connected component: "a superset of the EMST constraining vertex degree
 //! to ≥ 2 instead of ≥ 1" ([MOW22] §4.1). We build it as the Euclidean minimum spanning
-//! tree plus, for every leaf, its shortest missing Delaunay edge (ALGORITHMS.md §2.8; the
+//! tree plus, for every leaf, its shortest missing Delaunay edge (`docs/algorithms.md` §2.8; the
 //! original leaf rule is unverified, so the same rule as SIGDT2 is used). Inflating and
 //! sculpting are exactly those of SIG-CONNECT2D.
 //!
@@ -41,10 +41,10 @@ pub fn bc0(dt: &Triangulation) -> (EdgeMask, usize) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::Point;
     use crate::internals::check_reconstruction;
-    use crate::Point;
 
-    fn connect2d(pts: &[Point]) -> Result<Reconstruction, crate::Error> {
+    fn connect2d(pts: &[Point]) -> Result<Reconstruction, crate::error::Error> {
         Ok(connect2d_on(&Triangulation::new(pts)?))
     }
 

@@ -149,11 +149,11 @@ fn second_nearest(dt: &Triangulation, v: u32) -> Option<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::Point;
     use crate::internals::filter_edges;
     use crate::samplers::cycle_edges as cycle;
-    use crate::Point;
 
-    fn run(pts: &[Point]) -> Vec<crate::Edge> {
+    fn run(pts: &[Point]) -> Vec<crate::geometry::Edge> {
         filter_edges(pts, crawl)
     }
 
@@ -169,7 +169,7 @@ mod tests {
         // line, so the crawl reaches both ends and stops without closing.
         let pts: Vec<Point> =
             (0..20).map(|i| [i as f64, if i % 2 == 0 { 0.3 } else { -0.3 }]).collect();
-        let expected: Vec<crate::Edge> = (0..19).map(|i| [i, i + 1]).collect();
+        let expected: Vec<crate::geometry::Edge> = (0..19).map(|i| [i, i + 1]).collect();
         assert_eq!(run(&pts), expected);
     }
 

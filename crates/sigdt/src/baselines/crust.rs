@@ -1,6 +1,6 @@
 //! CRUST: the Delaunay edges between samples that survive adding the Voronoi vertices.
 //!
-//! [ABE98], ALGORITHMS.md §3.1:
+//! [ABE98], `docs/algorithms.md` §3.1:
 //! 1. the Delaunay triangulation of the samples `S` (given);
 //! 2. `V`, the circumcentres of its triangles (the Voronoi vertices of `S`);
 //! 3. the Delaunay triangulation of `S ∪ V`;
@@ -27,7 +27,7 @@
 //!   triangulation then uses spade's exact predicates on those rounded points, as every
 //!   floating-point implementation of CRUST does.
 //! - Coincident circumcentres (cocircular samples) are merged only when bitwise equal (spade
-//!   merges exact duplicates); ALGORITHMS.md §3.1 suggests a `1e-12 · diag` tolerance. Two
+//!   merges exact duplicates); `docs/algorithms.md` §3.1 suggests a `1e-12 · diag` tolerance. Two
 //!   nearly coincident Voronoi vertices block the same circles except those passing between
 //!   them, so the merge tolerance makes no difference outside such ties.
 //! - Hull triangles that are almost flat have astronomically far circumcentres. They are
@@ -159,10 +159,10 @@ fn range_scale(dt: &Triangulation, centres: &[Point]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::Edge;
     use crate::internals::filter_edges;
     use crate::samplers::cycle_edges as cycle;
     use crate::samplers::regular_polygon;
-    use crate::Edge;
 
     fn crust_edges(points: &[Point]) -> Vec<Edge> {
         filter_edges(points, crust)

@@ -1,6 +1,6 @@
 //! HNN-CRUST: nearest and "half-plane" nearest neighbours, kept where the choice is mutual.
 //!
-//! [OMW16] as in the authors' reference code, ALGORITHMS.md §3.3 (no Delaunay edges needed):
+//! [OMW16] as in the authors' reference code, `docs/algorithms.md` §3.3 (no Delaunay edges needed):
 //! 1. for each point `p`, its `K = min(15, m)` nearest points including itself, nearest
 //!    first (a 2-d tree; ties by input index);
 //! 2. `nn1(p)`: the nearest other point;
@@ -135,10 +135,10 @@ fn nearest(dt: &Triangulation, tree: &KdTree, points: &[Point], p: u32, k: usize
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::Edge;
     use crate::internals::filter_edges;
     use crate::samplers::cycle_edges as cycle;
     use crate::samplers::regular_polygon;
-    use crate::Edge;
 
     fn hnn_crust_edges(points: &[Point]) -> Vec<Edge> {
         filter_edges(points, hnn_crust)

@@ -1,6 +1,6 @@
 //! NN-CRUST: every point joined to its nearest neighbour and to its nearest "half neighbour".
 //!
-//! [DK99], ALGORITHMS.md §3.2, on the Delaunay triangulation (given):
+//! [DK99], `docs/algorithms.md` §3.2, on the Delaunay triangulation (given):
 //! 1. for each point `p`, its nearest neighbour `q`: the other end of the shortest Delaunay
 //!    edge at `p` (every nearest-neighbour edge is a Delaunay edge); add `pq`;
 //! 2. for each `p`, among the Delaunay edges `ps` with `(s - p)·(q - p) <= 0` (the angle
@@ -24,7 +24,7 @@
 //! O(n log n) in all.
 //!
 //! # Departures
-//! [DK99] looks for the half neighbour among all points; following ALGORITHMS.md §3.2 only
+//! [DK99] looks for the half neighbour among all points; following `docs/algorithms.md` §3.2 only
 //! Delaunay neighbours are candidates. The two agree whenever the nearest point in the
 //! half-plane is a Delaunay neighbour, which the ε < 1/3 proof of [DK99] establishes.
 //!
@@ -168,10 +168,10 @@ fn split(a: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::Edge;
     use crate::internals::filter_edges;
     use crate::samplers::cycle_edges as cycle;
     use crate::samplers::regular_polygon;
-    use crate::Edge;
 
     fn nn_crust_edges(points: &[Point]) -> Vec<Edge> {
         filter_edges(points, nn_crust)
@@ -236,7 +236,7 @@ mod tests {
         let path: Vec<Edge> = (0..n - 1).map(|i| [i, i + 1]).collect();
         assert_eq!(nn_crust_edges(&ellipse_arc(n, 90.0)), path);
         // A 300° arc: each endpoint takes the other as half neighbour across the gap, so the
-        // arc is closed into a polygon (the wrong edge ALGORITHMS.md §3.2 warns about).
+        // arc is closed into a polygon (the wrong edge `docs/algorithms.md` §3.2 warns about).
         let n = 60;
         assert_eq!(nn_crust_edges(&ellipse_arc(n, 300.0)), cycle(n));
     }

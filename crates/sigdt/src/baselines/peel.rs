@@ -34,8 +34,8 @@
 //!   `|ac| < |ab|`; at endpoint `b` it does not reset its neighbour list, so it counts the
 //!   `G`-neighbours of both `a` and `b` (other than `b`, `a`) whose distance *from `b`* is
 //!   below `|ab|`. [`peel`] reproduces that count, since it is what the authors' program
-//!   computes. Counting at `b` only `b`'s own neighbours, the evident intent, changes one of the
-//!   project's 522 labelled cases (an open curve, then also reconstructed).
+//!   computes. Counting at `b` only `b`'s own neighbours, the evident intent, changes results
+//!   on the labelled curves (`docs/evaluation.md`).
 //!
 //! [PMM18]: https://github.com/amaldevp/Peeling_the_Longest
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
@@ -108,9 +108,9 @@ fn peeled_graph(dt: &Triangulation) -> EdgeMask {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Point;
+    use crate::geometry::Point;
 
-    fn run(pts: &[Point]) -> Vec<crate::Edge> {
+    fn run(pts: &[Point]) -> Vec<crate::geometry::Edge> {
         let dt = Triangulation::new(pts).unwrap();
         let reference = dt.to_input_edges(peel(&dt));
         assert_eq!(reference, dt.to_input_edges(peel_with(&dt, false)));
@@ -132,7 +132,7 @@ mod tests {
                 [a.cos(), a.sin()]
             })
             .collect();
-        let expected: Vec<crate::Edge> = (0..11).map(|i| [i, i + 1]).collect();
+        let expected: Vec<crate::geometry::Edge> = (0..11).map(|i| [i, i + 1]).collect();
         assert_eq!(run(&pts), expected);
     }
 

@@ -9,7 +9,7 @@
 //! O(n).
 use super::boundary::Boundary;
 use crate::delaunay::EMPTY;
-use crate::Edge;
+use crate::geometry::Edge;
 
 /// The loops of the boundary, as input indices.
 pub fn loops(bd: &Boundary<'_>) -> Vec<Vec<usize>> {

@@ -5,12 +5,13 @@
 //! boundary edge; the one that least increases the total boundary length is taken (its new
 //! edges added, edges that become interior removed) until no non-manifold vertex is left.
 //!
-//! Cost of a triangle `t` (paper, with our decision): for each edge, `+len` if it is not on the boundary (it
-//! becomes boundary), `−len` if it is on the boundary with interior on the other side (it
-//! becomes interior), `0` if it is a boundary edge with exterior on both sides (dangling).
-//! Interior edges are removed at once, not at the end as in the paper's figure: the labels are
-//! the same, and the vertex tests need the current boundary. Enclosed pockets become
-//! interior as they form ([`super::pocket`]). Ties: lowest triangle number.
+//! Cost of a triangle `t` (the paper's rule, made exact in `docs/algorithms.md` §2.4): for
+//! each edge, `+len` if it is not on the boundary (it becomes boundary), `−len` if it is on
+//! the boundary with interior on the other side (it becomes interior), `0` if it is a
+//! boundary edge with exterior on both sides (dangling). Interior edges are removed at once,
+//! not at the end as in the paper's figure: the labels are the same, and the vertex tests
+//! need the current boundary. Enclosed pockets become interior as they form
+//! ([`pocket`](super::pocket)). Ties: lowest triangle number.
 //!
 //! # Guarantee
 //! Terminates after at most `#triangles` steps (each turns one exterior triangle interior for

@@ -83,10 +83,10 @@ pub(crate) fn inflate_and_sculpt_traced(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Edge;
+    use crate::geometry::Edge;
     use trace::Phase;
 
-    fn circle(k: usize) -> Vec<crate::Point> {
+    fn circle(k: usize) -> Vec<crate::geometry::Point> {
         (0..k)
             .map(|i| {
                 let a = i as f64 * std::f64::consts::TAU / k as f64;

@@ -1,5 +1,5 @@
-//! Enclosed exterior pockets (ALGORITHMS.md §2.5, a (our decision) decision: the paper does not discuss
-//! them).
+//! Enclosed exterior pockets (`docs/algorithms.md` §2.5; our decision, since the paper does
+//! not discuss them).
 //!
 //! When inflating takes a triangle `abc` that had only `ab` on the boundary while `c` was
 //! already connected to `a` along the boundary, the new edges `ac` and `bc` close a cycle:

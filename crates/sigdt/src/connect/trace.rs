@@ -17,7 +17,7 @@
 //! # Complexity
 //! Building the trace: O(n) beyond the run. Each replay: O(n log n) for its edge table, then
 //! O(1) per step.
-use crate::Edge;
+use crate::geometry::Edge;
 
 /// Which part of the run changed a label.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -7,9 +7,8 @@
 //! walk from the previous vertex (`insert_with_hint`) finds the next triangle in O(1)
 //! expected steps.
 //!
-//! Why: measured on curve samples, spade's `bulk_load` and the `delaunator` crate go
-//! quadratic (3.3 s and 3.8 s for 10⁵ points on a spiral), while BRIO + hints stays near
-//! 1 µs per point up to 10⁷ points.
+//! Why: on curve samples, spade's `bulk_load` and the `delaunator` crate go quadratic, while
+//! BRIO with hints stays near-linear (the measurements are in `docs/algorithms.md` §0.2).
 //!
 //! # Complexity
 //! O(n log n) for the sorts; the shuffle uses a fixed seed, so the order (and with it the

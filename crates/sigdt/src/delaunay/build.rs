@@ -2,13 +2,14 @@
 //! export to flat arrays.
 use super::brio::brio_order;
 use super::{Scaling, Shape, Triangulation, EMPTY};
+use crate::error::{Error, Result};
+use crate::geometry::Edge;
 use crate::geometry::{orient2d, Point};
-use crate::{Edge, Error, Result};
 use spade::handles::FixedVertexHandle;
 use spade::{DelaunayTriangulation, Point2, Triangulation as _};
 
 impl Triangulation {
-    /// Triangulates `points` (ALGORITHMS.md §0.1–0.2).
+    /// Triangulates `points` (`docs/algorithms.md` §0.1–0.2).
     ///
     /// # Errors
     /// [`Error::NonFinite`] for NaN or infinite coordinates, [`Error::CoordinateRange`] when

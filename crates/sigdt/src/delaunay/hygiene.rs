@@ -1,4 +1,4 @@
-//! Input hygiene shared by every algorithm (ALGORITHMS.md §0.1): finite coordinates, a safe
+//! Input hygiene shared by every algorithm (`docs/algorithms.md` §0.1): finite coordinates, a safe
 //! coordinate range for exact predicates, `-0.0` normalised to `0.0`.
 //!
 //! Coordinates are scaled by a power of two so that the largest absolute coordinate lies in
@@ -6,7 +6,8 @@
 //! comparison gives the same answer as on the caller's coordinates, while spade's exact
 //! predicates get the range they need (`[2^-142, 2^201]`, Shewchuk's bounds) and squared
 //! lengths can neither overflow nor underflow.
-use crate::{Error, Point, Result};
+use crate::error::{Error, Result};
+use crate::geometry::Point;
 
 /// Smallest non-zero absolute coordinate spade accepts (2^-142).
 const MIN_ALLOWED: f64 = spade::MIN_ALLOWED_VALUE;

@@ -1,7 +1,7 @@
 //! The Delaunay triangulation, seen through flat index arrays.
 //!
 //! Built with the `spade` crate (exact predicates) in BRIO order (module `brio`) and then exported
-//! to the representation every algorithm here uses (ALGORITHMS.md §0.2):
+//! to the representation every algorithm here uses (`docs/algorithms.md` §0.2):
 //!
 //! - `triangles[3t..3t+3]`: the vertices of triangle `t`, counter-clockwise;
 //! - half-edge `h` runs from `triangles[h]` to `triangles[next(h)]` and has triangle `h / 3`
@@ -17,8 +17,8 @@
 //! points, give a triangulation without triangles ([`Shape`]).
 //!
 //! # Complexity
-//! O(n log n) expected time; about 140 bytes per point while spade's structure is alive,
-//! about 60 afterwards.
+//! O(n log n) expected time, O(n) memory; spade's structure is dropped once the flat arrays
+//! are filled (memory per point: `docs/algorithms.md` §0.2).
 
 pub(crate) mod brio;
 mod build;
@@ -26,8 +26,8 @@ mod hygiene;
 
 pub use hygiene::Scaling;
 
+use crate::geometry::Edge;
 use crate::geometry::{distance, Point};
-use crate::Edge;
 
 /// Marks a missing twin (a hull half-edge) or a missing triangle.
 pub const EMPTY: u32 = u32::MAX;

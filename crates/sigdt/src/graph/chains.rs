@@ -11,7 +11,7 @@
 //!
 //! # Complexity
 //! O(n + m log m) for `n` points and `m` edges.
-use crate::Edge;
+use crate::geometry::Edge;
 
 /// One maximal chain, as the sequence of its vertices.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -59,7 +59,7 @@ impl EdgeMask {
     }
 
     /// The edges as sorted input-index pairs.
-    pub fn edges(&self, dt: &Triangulation) -> Vec<crate::Edge> {
+    pub fn edges(&self, dt: &Triangulation) -> Vec<crate::geometry::Edge> {
         dt.to_input_edges(
             dt.edge_halfedges().filter(|&h| self.contains(h)).map(|h| [dt.origin(h), dt.dest(h)]),
         )

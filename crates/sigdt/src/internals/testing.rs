@@ -2,10 +2,11 @@
 //!
 //! [`check_reconstruction`] states the output invariants every method must keep: edges join
 //! two distinct valid indices and are sorted and unique; loops and paths are simple and
-//! disjoint (paths may share a junction end in a network) and agree with the edges; a manifold status means every distinct point has degree 2; no
-//! two output edges cross.
+//! disjoint (paths may share a junction end in a network) and agree with the edges; a
+//! manifold status means every distinct point has degree 2; no two output edges cross.
+use crate::geometry::Edge;
 use crate::geometry::{segments_cross, Point};
-use crate::{Edge, Reconstruction, Status};
+use crate::result::{Reconstruction, Status};
 use std::collections::HashMap;
 
 /// Checks the output invariants of `rec` for `points`; the error says what is violated.

@@ -7,8 +7,8 @@
 //! # Complexity
 //! O(n log n).
 use crate::delaunay::{Shape, Triangulation};
+use crate::geometry::Edge;
 use crate::graph::{EdgeMask, UnionFind};
-use crate::Edge;
 
 /// The EMST of a proper triangulation as an edge mask.
 pub fn emst_mask(dt: &Triangulation) -> EdgeMask {

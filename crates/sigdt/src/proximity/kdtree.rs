@@ -7,7 +7,7 @@
 //! Departure from alternating axes: on points along a horizontal or vertical line, an
 //! alternating tree splits half its levels on a coordinate all points share. Such a split
 //! separates nothing, every query descends both sides, and a query costs O(√n) instead of
-//! O(log n) (HNN-CRUST took 5 s on 10⁵ points on a line plus one point off it).
+//! O(log n) (HNN-CRUST became quadratic on points along a line plus one point off it).
 //!
 //! # Complexity
 //! Build O(n log n); a query visits O(log n + output) nodes on well-spread data.

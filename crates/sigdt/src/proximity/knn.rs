@@ -1,15 +1,14 @@
 //! The k-nearest-neighbour graph (undirected union).
 //!
 //! Edge `pq` iff `q` is among the `k` nearest distinct points of `p` or `p` among those of
-//! `q` (ALGORITHMS.md §4.10; ties by input index). Exact duplicates take part through their
+//! `q` (`docs/algorithms.md` §4.10; ties by input index). Exact duplicates take part through their
 //! representative and get no edges.
 //!
 //! # Complexity
 //! O(n log n + nk log k) with a 2-d tree.
 use super::kdtree::KdTree;
 use crate::delaunay::Triangulation;
-use crate::geometry::Point;
-use crate::Edge;
+use crate::geometry::{Edge, Point};
 
 /// The kNN graph of the triangulation's distinct points as sorted input-index pairs.
 pub(crate) fn knn(dt: &Triangulation, k: usize) -> Vec<Edge> {

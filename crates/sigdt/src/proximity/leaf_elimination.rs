@@ -4,10 +4,11 @@
 //! incident Delaunay edge not yet in the graph. The paper says this "does not affect results
 //! in general" and helps point sets with sharp corners.
 //!
-//! Order (our decision, ALGORITHMS.md §1.4): leaves are served in ascending length of that candidate edge (ties by input
-//! index), and a leaf that an earlier addition already gave a second edge is skipped. This
-//! never gives a vertex a third edge when two leaves choose each other, and unlike index
-//! order it does not depend on how the input happens to be ordered.
+//! Order (our decision, `docs/algorithms.md` §1.4): leaves are served in ascending length of
+//! that candidate edge (ties by input index), and a leaf that an earlier addition already
+//! gave a second edge is skipped. This never gives a vertex a third edge when two leaves
+//! choose each other, and unlike index order it does not depend on how the input happens to
+//! be ordered.
 //!
 //! # Complexity
 //! O(n log n) for sorting the leaves, O(n) otherwise ([MOW22]: O(kn) for degree k).

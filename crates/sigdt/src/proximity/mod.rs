@@ -12,7 +12,8 @@ pub(crate) mod sigdt;
 pub use nearest::nearest_neighbour_distances;
 
 use crate::delaunay::{Shape, Triangulation};
-use crate::{Edge, Error, Point, Result};
+use crate::error::{Error, Result};
+use crate::geometry::{Edge, Point};
 use std::fmt;
 
 /// Which proximity graph to build.

@@ -18,8 +18,8 @@ use super::kdtree::KdTree;
 use super::nearest::nearest_vertex_distances;
 use super::sigdt::{is_sig_edge, TIE_SLACK};
 use crate::delaunay::Triangulation;
+use crate::geometry::Edge;
 use crate::geometry::{distance, Point};
-use crate::Edge;
 
 /// The SIG of the triangulation's distinct points as sorted input-index pairs.
 pub(crate) fn sig(dt: &Triangulation) -> Vec<Edge> {

@@ -3,7 +3,7 @@
 //! A Delaunay edge `uv` is kept iff `|uv| <= r(u) + r(v)`, where `r(x)` is the distance from
 //! `x` to its nearest neighbour (the closed SIG rule of [Tou88]: the two disks of influence
 //! touch or overlap). Ties are kept with a relative slack of 1e-12, so that exactly touching
-//! disks (regular spacing) stay in despite rounding (ALGORITHMS.md §1.2, a (our decision) decision).
+//! disks (regular spacing) stay in despite rounding (our decision, `docs/algorithms.md` §1.2).
 //!
 //! # Guarantee
 //! If the points sample a smooth closed curve with ρ < 1 and non-uniformity u < 2, SIGDT
@@ -21,9 +21,9 @@
 //! [Tou88]: https://doi.org/10.1016/0167-8655(88)90029-4
 use super::nearest::nearest_vertex_distances;
 use crate::delaunay::{Shape, Triangulation};
+use crate::geometry::Edge;
 use crate::geometry::{distance, squared_distance};
 use crate::graph::EdgeMask;
-use crate::Edge;
 
 /// Relative slack of the SIG test: `|uv| <= (r(u) + r(v)) · (1 + TIE_SLACK)`.
 pub(crate) const TIE_SLACK: f64 = 1e-12;

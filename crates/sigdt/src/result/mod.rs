@@ -10,7 +10,7 @@ pub(crate) use degenerate::degenerate_result;
 pub(crate) use from_edges::from_vertex_pairs;
 pub use polygons::Polygon;
 
-use crate::Edge;
+use crate::geometry::Edge;
 
 /// The result of [`reconstruct`](crate::reconstruct()).
 ///
@@ -50,8 +50,8 @@ pub enum Status {
     Polygons,
     /// Sculpting found no candidate triangle while these points (input indices, sorted)
     /// were still inside the boundary. The loops are simple and disjoint but miss them.
-    /// [MOW22](https://doi.org/10.1111/cgf.14654) §4.2.2: sculpting can fail when the Delaunay triangulation has no suitable
-    /// Hamiltonian cycle.
+    /// [MOW22](https://doi.org/10.1111/cgf.14654) §4.2.2: sculpting can fail when the
+    /// Delaunay triangulation has no suitable Hamiltonian cycle.
     SculptingStuck {
         /// The points not on any loop.
         left_out: Vec<usize>,

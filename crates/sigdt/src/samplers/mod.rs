@@ -31,7 +31,7 @@ pub use noise::{add_outliers, lfs_noise, uniform_noise, MAX_OUTLIER_FRACTION};
 pub use polygon::regular_polygon;
 pub use spiral::spiral_band;
 
-use crate::{geometry::Point, Edge};
+use crate::geometry::{Edge, Point};
 
 /// A SplitMix64 pseudo-random generator (Steele, Lea, Flood 2014): 64 bits of state,
 /// statistically good enough for sampling test inputs, not for cryptography.

@@ -1,5 +1,5 @@
 //! Perturbations of clean samples for the noise and outlier experiments of \[MOW22\]
-//! (Fig. 15–18), as specified in `ALGORITHMS.md` 4.7 and 4.8.
+//! (Fig. 15–18), as specified in `docs/algorithms.md` §4.7 and §4.8.
 //!
 //! - [`uniform_noise`]: each point moves by `s·U₁·diag` in direction `2π·U₂` (`diag` = the
 //!   bounding-box diagonal of the input), the convention of the authors' FitConnect test
@@ -24,7 +24,8 @@
 use std::f64::consts::TAU;
 
 use super::Rng;
-use crate::{Error, Point, Result};
+use crate::error::{Error, Result};
+use crate::geometry::Point;
 
 /// Largest outlier fraction accepted by [`add_outliers`] (10 outliers per curve point).
 pub const MAX_OUTLIER_FRACTION: f64 = 10.0;

@@ -17,8 +17,9 @@ use std::f64::consts::PI;
 /// hard case for Delaunay insertion order: many long thin, nearly cocircular triangles.
 pub fn spiral_band(n: usize) -> Sample {
     const R0: f64 = 2.0;
-    const C: f64 = 1.0 / PI; // r grows by C per radian: pitch 2π·C = 2 band widths
-                             // Length n/4 ≈ ∫ (r_in + r_out) dθ + π = B·end + C·end² + π with B = 2·R0 + 1: solve.
+    // r grows by C per radian: pitch 2π·C = 2 band widths.
+    const C: f64 = 1.0 / PI;
+    // Length n/4 ≈ ∫ (r_in + r_out) dθ + π = B·end + C·end² + π with B = 2·R0 + 1: solve.
     let (b, excess) = (2.0 * R0 + 1.0, (n as f64 / 4.0 - PI).max(0.0));
     let end = ((b * b + 4.0 * C * excess).sqrt() - b) / (2.0 * C); // θ at the far cap
     let inner = Cumulative::new(|t: f64| (R0 + C * t).hypot(C), 0.0, end);

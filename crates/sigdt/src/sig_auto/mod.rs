@@ -123,9 +123,9 @@ fn add_counts(total: &mut Stats, part: &Stats) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::Point;
     use crate::internals::check_reconstruction;
     use crate::proximity::emst::minimum_spanning_forest;
-    use crate::Point;
     use std::f64::consts::TAU;
 
     fn arc(n: usize, radius: f64, centre: Point, from: f64, to: f64) -> Vec<Point> {

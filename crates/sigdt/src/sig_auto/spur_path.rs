@@ -170,7 +170,7 @@ fn for_each_order(items: &[u32], f: &mut impl FnMut(&[u32])) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Point;
+    use crate::geometry::Point;
 
     #[test]
     fn a_cusp_reached_through_one_side_is_threaded_in_order() {

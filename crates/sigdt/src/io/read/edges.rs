@@ -5,7 +5,8 @@ use std::io::{BufRead, BufReader};
 use std::path::Path;
 
 use super::lines::{pair, Lines};
-use crate::{Edge, Error, Result};
+use crate::error::{Error, Result};
+use crate::geometry::Edge;
 
 /// Reads the edges of the file at `path`; see [`parse_edges`].
 pub fn read_edges(path: &Path) -> Result<Vec<Edge>> {

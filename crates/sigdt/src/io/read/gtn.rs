@@ -4,7 +4,8 @@
 use std::io::BufRead;
 
 use super::lines::{coordinate, too_many, Lines};
-use crate::{Point, Result};
+use crate::error::Result;
+use crate::geometry::Point;
 
 /// Gtn points: the header `N 2 0 0`, then `N` lines `index x y`.
 pub(super) fn gtn<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result<Vec<Point>> {
@@ -84,9 +85,10 @@ fn gtn_point(line: &str, expected: usize) -> Result<Point, String> {
 
 #[cfg(test)]
 mod tests {
+    use crate::error::Result;
+    use crate::geometry::Point;
     use crate::io::read::lines::tests::error;
     use crate::io::{parse_points, PointFormat};
-    use crate::{Point, Result};
 
     fn parse(text: &str, format: Option<PointFormat>) -> Result<Vec<Point>> {
         parse_points(text.as_bytes(), "t.xy", format)

@@ -8,7 +8,7 @@
 
 use std::io::{BufRead, ErrorKind};
 
-use crate::{Error, Result};
+use crate::error::{Error, Result};
 
 /// The longest line a reader accepts, in bytes (1 MiB), not counting the line ending.
 pub const MAX_LINE: usize = 1 << 20;
@@ -163,8 +163,8 @@ pub(super) fn too_many(max: usize) -> String {
 
 #[cfg(test)]
 pub(super) mod tests {
+    use crate::error::{Error, Result};
     use crate::io::{parse_edges, parse_points};
-    use crate::{Error, Result};
     use std::io::{BufReader, Read};
 
     use super::MAX_LINE;

@@ -18,7 +18,8 @@ use std::path::Path;
 
 use super::gtn::{gtn, is_gtn_header};
 use super::lines::{coordinate, fields, pair, too_many, Lines};
-use crate::{Error, Point, Result};
+use crate::error::{Error, Result};
+use crate::geometry::Point;
 
 /// A point file format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

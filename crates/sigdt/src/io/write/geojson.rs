@@ -3,7 +3,8 @@
 use std::io::{self, Write};
 
 use super::geometry::{geometry, write_pair, Kind, Notation};
-use crate::{Point, Reconstruction, Status};
+use crate::geometry::Point;
+use crate::result::{Reconstruction, Status};
 
 /// The GeoJSON notation of geometry objects.
 pub(super) struct GeoJson;

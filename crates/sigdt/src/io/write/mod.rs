@@ -15,7 +15,8 @@ use std::io::{self, Write};
 use std::path::Path;
 use std::str::FromStr;
 
-use crate::{Edge, Point, Reconstruction};
+use crate::geometry::{Edge, Point};
+use crate::result::Reconstruction;
 
 /// A text format for results. Spelled `edges`, `loops`, `wkt` and `geojson`; [`FromStr`]
 /// and [`Display`](fmt::Display) map between the two.
@@ -68,16 +69,10 @@ impl fmt::Display for OutputFormat {
 }
 
 impl FromStr for OutputFormat {
-    type Err = crate::Error;
+    type Err = crate::error::Error;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        OutputFormat::ALL.iter().copied().find(|f| f.name() == s).ok_or_else(|| {
-            let names: Vec<_> = OutputFormat::ALL.iter().map(|f| f.name()).collect();
-            crate::Error::InvalidOption(format!(
-                "unknown output format '{s}' (expected one of: {})",
-                names.join(", ")
-            ))
-        })
+        crate::error::find_by_name(OutputFormat::ALL, OutputFormat::name, s, "output format")
     }
 }
 
@@ -126,7 +121,7 @@ fn loops(out: &mut Vec<u8>, rec: &Reconstruction) -> io::Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Status;
+    use crate::result::Status;
 
     const SQUARE: [Point; 4] = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
 

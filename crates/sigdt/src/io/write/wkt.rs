@@ -3,7 +3,8 @@
 use std::io;
 
 use super::geometry::{geometry, write_pair, Kind, Notation};
-use crate::{Point, Reconstruction};
+use crate::geometry::Point;
+use crate::result::Reconstruction;
 
 /// The WKT notation.
 pub(super) struct Wkt;
