@@ -102,7 +102,7 @@ pub struct Options {
     /// Give every SIGDT leaf its shortest missing Delaunay edge before inflating (SIGDT2,
     /// [MOW22](https://doi.org/10.1111/cgf.14654) §4.2.3). On by default: on the labelled
     /// curves it is never worse, and better on manifold and sharp-corner cases
-    /// (`docs/algorithms.md` §3 has the numbers).
+    /// (`docs/algorithms.md` §7.1 has the numbers).
     pub leaf_elimination: bool,
 }
 

@@ -38,6 +38,7 @@ pub(crate) fn sig_connect2d_on(dt: &Triangulation, leaf_elimination: bool) -> Re
 
 /// The graph inflating starts from, SIGDT or (with leaf elimination) SIGDT2, and the number
 /// of leaf edges added, on a proper triangulation.
+#[doc(hidden)]
 pub fn initial_graph(dt: &Triangulation, leaf_elimination: bool) -> (EdgeMask, usize) {
     let (mut graph, degree) = sigdt_with_degrees(dt);
     let leaf_edges_added =

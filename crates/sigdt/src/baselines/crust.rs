@@ -27,8 +27,8 @@
 //!   triangulation then uses spade's exact predicates on those rounded points, as every
 //!   floating-point implementation of CRUST does.
 //! - Coincident circumcentres (cocircular samples) are merged only when bitwise equal (spade
-//!   merges exact duplicates); `docs/algorithms.md` §3.1 suggests a `1e-12 · diag` tolerance. Two
-//!   nearly coincident Voronoi vertices block the same circles except those passing between
+//!   merges exact duplicates), not within a `1e-12 · diag` tolerance (`docs/algorithms.md`
+//!   §3.1 weighs both). Two nearly coincident Voronoi vertices block the same circles except those passing between
 //!   them, so the merge tolerance makes no difference outside such ties.
 //! - Hull triangles that are almost flat have astronomically far circumcentres. They are
 //!   *not* dropped for being far: dropping one can keep a hull chord that it alone blocks

@@ -1,7 +1,7 @@
 //! The methods SIG-CONNECT2D is measured against, one module per paper. CONNECT2D runs the
 //! shared engine from its own graph; the others are graph filters that return vertex pairs,
 //! read as loops and paths by the caller. Why GATHAN, CCRUST, LENZ and VICUR are not here:
-//! `docs/evaluation.md`.
+//! `docs/evaluation.md`, section "Methods without an implementation".
 
 pub(crate) mod connect2d;
 pub(crate) mod crawl;

@@ -42,7 +42,7 @@ pub struct Boundary<'a> {
     pub edges: EdgeMask,
     /// Class of every vertex.
     pub class: Vec<VertexClass>,
-    /// Connectivity of `B` (an over-approximation; see [`pocket`](super::pocket));
+    /// Connectivity of `B` (an over-approximation; see `pocket`);
     /// built by [`Boundary::track_components`] when inflating has work to do.
     pub components: UnionFind,
     /// Number of non-manifold vertices.
@@ -50,7 +50,7 @@ pub struct Boundary<'a> {
     /// Number of interior vertices.
     pub interior: usize,
     /// Every label change after [`Boundary::from_graph`], in order, when recording
-    /// ([`trace`](super::trace)); `None` (the default) records nothing.
+    /// (`trace`); `None` (the default) records nothing.
     pub trace: Option<Vec<Step>>,
     /// Visit stamps per triangle for pocket searches.
     pub(crate) stamp: Vec<u32>,

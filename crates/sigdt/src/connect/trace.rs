@@ -22,12 +22,12 @@ use crate::geometry::Edge;
 /// Which part of the run changed a label.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Phase {
-    /// Inflating took one exterior triangle ([`inflate`](super::inflate)).
+    /// Inflating took one exterior triangle (`inflate`).
     Inflate,
     /// Inflating closed a cycle and filled the enclosed pocket
-    /// ([`pocket`](super::pocket)); a pocket is several steps in a row.
+    /// (`pocket`); a pocket is several steps in a row.
     Pocket,
-    /// Sculpting took one interior triangle ([`sculpt`](super::sculpt)).
+    /// Sculpting took one interior triangle (`sculpt`).
     Sculpt,
 }
 

@@ -1,7 +1,8 @@
 //! Building a [`Triangulation`]: hygiene, degenerate shapes, spade insertion in BRIO order,
 //! export to flat arrays.
 use super::brio::brio_order;
-use super::{Scaling, Shape, Triangulation, EMPTY};
+use super::hygiene::Scaling;
+use super::{Shape, Triangulation, EMPTY};
 use crate::error::{Error, Result};
 use crate::geometry::Edge;
 use crate::geometry::{orient2d, Point};

@@ -22,9 +22,7 @@
 
 pub(crate) mod brio;
 mod build;
-mod hygiene;
-
-pub use hygiene::Scaling;
+pub(crate) mod hygiene;
 
 use crate::geometry::Edge;
 use crate::geometry::{distance, Point};
@@ -104,7 +102,7 @@ impl Triangulation {
         self.triangles.len()
     }
 
-    /// Vertex position, scaled by the exact power of two chosen in [`Scaling`]; use it for
+    /// Vertex position, scaled by the exact power of two chosen at construction; use it for
     /// comparisons only, never report it.
     #[inline]
     pub fn point(&self, v: u32) -> Point {

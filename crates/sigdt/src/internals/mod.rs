@@ -10,7 +10,7 @@ pub use crate::baselines::{
 pub use crate::connect::boundary::{Boundary, VertexClass};
 pub use crate::connect::extract::{loop_edges, loops};
 pub use crate::connect::{inflate::inflate, sculpt::sculpt};
-pub use crate::delaunay::Scaling;
+pub use crate::delaunay::hygiene::Scaling;
 pub use crate::error::find_by_name;
 pub use crate::geometry::{distance, orient2d, segments_cross, squared_distance};
 pub use crate::graph::{chains, Chain, EdgeMask, UnionFind};

@@ -37,7 +37,7 @@ pub(crate) fn is_sig_edge(len: f64, ru: f64, rv: f64) -> bool {
 
 /// The SIGDT edges of a proper triangulation as an edge mask.
 ///
-/// Same test as [`is_sig_edge`], on squared lengths: `|uv|² <= ((r(u) + r(v))·(1 + slack))²`
+/// Same test as `is_sig_edge`, on squared lengths: `|uv|² <= ((r(u) + r(v))·(1 + slack))²`
 /// (both sides are non-negative, so squaring keeps the order; the slack absorbs the
 /// rounding difference).
 pub fn sigdt_mask(dt: &Triangulation) -> EdgeMask {

@@ -14,7 +14,7 @@
 //! O(k² + Σ |loop|) for `k` loops when bounding boxes separate them, O(k · Σ |loop|) at worst
 //! (loops nested in one another).
 use super::Reconstruction;
-use crate::delaunay::Scaling;
+use crate::delaunay::hygiene::Scaling;
 use crate::geometry::{orient2d, Point};
 
 /// A polygon of a result: indices into [`Reconstruction::loops`].

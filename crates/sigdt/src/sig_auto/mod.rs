@@ -7,17 +7,17 @@
 //! 1. **Chains.** If the component's minimum spanning tree (over its SIGDT2 edges) is a
 //!    path, the component is a *chain*: a piece of curve, open or closed. Chains are then
 //!    joined end to end, and closed into loops, along Delaunay edges no longer than twice
-//!    the longest edge of the chains they join ([`chain_join`], after
+//!    the longest edge of the chains they join (`chain_join`, after
 //!    the non-uniformity condition `u < 2` of [MOW22] Theorem 1). What stays open is
 //!    returned as open paths.
 //! 2. **Everything else** (the spanning tree branches: extra SIGDT edges at sharp corners,
 //!    noise, dense clusters) is inflated and sculpted like SIG-CONNECT2D, but on the
-//!    component's own triangulation ([`closed_component`]), so
+//!    component's own triangulation (`closed_component`), so
 //!    curves nested in one another stay separate loops. A loop is cut open at its longest
 //!    edge when that edge is more than twice the second longest. If some loop edge is more
 //!    than twice the longest edge of the component's SIGDT spanning forest (a leaf edge
 //!    reaching across), the component's SIGDT pieces are used as chains instead, when each
-//!    is a path with branches of at most four samples ([`spur_path`]).
+//!    is a path with branches of at most four samples (`spur_path`).
 //!
 //! # Guarantees
 //! - The output is always a set of vertex-disjoint simple loops and simple open paths made
@@ -51,6 +51,7 @@ use crate::proximity::sigdt::TIE_SLACK;
 use crate::result::{degenerate_result, from_vertex_pairs, Reconstruction, Stats, Status};
 use crate::sig_connect2d::sig_connect2d_on;
 use chain_join::Chains;
+#[doc(hidden)]
 pub use chain_join::JOIN_RATIO;
 use closed_component::closed_component;
 use spanning_forests::Forests;
@@ -63,6 +64,7 @@ pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
 /// SIG-AUTO with another ratio in place of [`JOIN_RATIO`] in all three places it bounds a
 /// gap: chain joins, loop cutting and the leaf-edge check. Not a user parameter: it exists
 /// so that the choice of the bound can be measured (`examples/join_ratio_sweep.rs`).
+#[doc(hidden)]
 pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstruction {
     if let Some(result) = degenerate_result(dt) {
         return result;
