@@ -5,7 +5,7 @@ Run from the repository root after ``make py-build build``::
     .venv/bin/python python/bench/bench_python.py            # prints a Markdown report
 
 (a) **Overhead of calling from Python at 1e5 points.** Input: ``large_100k.xy`` of the
-labelled curves (``$SIGDT_DATA`` or ``../shared/data/curves``), read once per process.
+labelled curves (``$SIGDT_DATA`` or the repository's ``data/curves``), read once per process.
 
 - *Rust time*: the CLI's own timing of the library call, ``sigdt reconstruct FILE -v``
   (``time: X ms``, an ``Instant`` around ``sigdt::reconstruct`` only: no parsing, no output).
@@ -64,7 +64,7 @@ def cli_binary() -> Path:
 
 
 def default_input() -> Path:
-    data = Path(os.environ.get("SIGDT_DATA") or ROOT.parent / "shared" / "data" / "curves")
+    data = Path(os.environ.get("SIGDT_DATA") or ROOT / "data" / "curves")
     return data / "large_100k.xy"
 
 

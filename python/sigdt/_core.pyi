@@ -2,52 +2,73 @@
 
 import os
 from collections.abc import Sequence
+from typing import TypedDict
 
 import numpy as np
 import numpy.typing as npt
-from typing_extensions import TypeAlias
 
-_Raw: TypeAlias = tuple[
-    npt.NDArray[np.int64],  # edges (m, 2)
-    npt.NDArray[np.int64],  # loop vertices, flat
-    npt.NDArray[np.int64],  # loop offsets
-    npt.NDArray[np.int64],  # path vertices, flat
-    npt.NDArray[np.int64],  # path offsets
-    str,  # status
-    npt.NDArray[np.int64],  # left out
-    npt.NDArray[np.int64],  # duplicates (d, 2)
-    dict[str, int],  # stats
-]
-_Trace: TypeAlias = tuple[
-    npt.NDArray[np.int64],  # triangles (T, 3)
-    npt.NDArray[np.int64],  # graph (m, 2)
-    npt.NDArray[np.bool_],  # initial inside (T,)
-    npt.NDArray[np.int64],  # dangling (d, 2)
-    npt.NDArray[np.int64],  # step triangle (S,)
-    npt.NDArray[np.bool_],  # step inside (S,)
-    npt.NDArray[np.uint8],  # step phase (S,): 0 inflate, 1 pocket, 2 sculpt
-    int,  # inflated at
-]
+# What ``reconstruct`` hands over, by name (``python/sigdt/_result.py`` keeps it as is).
+# Loops and paths are flat: chain ``k`` is ``vertices[offsets[k]:offsets[k + 1]]``.
+_Reconstruction = TypedDict(
+    "_Reconstruction",
+    {
+        "edges": npt.NDArray[np.int64],  # (m, 2)
+        "loop_vertices": npt.NDArray[np.int64],
+        "loop_offsets": npt.NDArray[np.int64],
+        "path_vertices": npt.NDArray[np.int64],
+        "path_offsets": npt.NDArray[np.int64],
+        "status": str,
+        "left_out": npt.NDArray[np.int64],
+        "duplicates": npt.NDArray[np.int64],  # (d, 2)
+        "stats": dict[str, int],
+    },
+)
 
 METHODS: list[str]
 GRAPH_KINDS: list[str]
+PHASES: list[str]
 __version__: str
 
 class InvalidInputError(ValueError): ...
 class ParseError(ValueError): ...
 class InternalError(RuntimeError): ...
 
-def reconstruct(points: npt.NDArray[np.float64], method: str, leaf_elimination: bool) -> _Raw: ...
+class Trace(object):  # noqa: UP004  # the bases mirror the runtime's, as test_docs.py checks
+    @property
+    def triangles(self) -> npt.NDArray[np.int64]: ...  # (T, 3)
+    @property
+    def graph(self) -> npt.NDArray[np.int64]: ...  # (m, 2)
+    @property
+    def initial_inside(self) -> npt.NDArray[np.bool_]: ...  # (T,)
+    @property
+    def dangling(self) -> npt.NDArray[np.int64]: ...  # (d, 2)
+    @property
+    def step_triangle(self) -> npt.NDArray[np.int64]: ...  # (S,)
+    @property
+    def step_inside(self) -> npt.NDArray[np.bool_]: ...  # (S,)
+    @property
+    def step_phase(self) -> npt.NDArray[np.uint8]: ...  # (S,): indices into PHASES
+    @property
+    def inflated_at(self) -> int: ...
+    def boundary_at(self, step: int) -> npt.NDArray[np.int64]: ...  # (m, 2)
+    def inside_at(self, step: int) -> npt.NDArray[np.bool_]: ...  # (T,)
+
+def reconstruct(
+    points: npt.NDArray[np.float64], method: str, leaf_elimination: bool
+) -> _Reconstruction: ...
 def reconstruct_many(
     point_sets: Sequence[npt.NDArray[np.float64]],
     method: str,
     leaf_elimination: bool,
     n_jobs: int | None = None,
     _panic_in_set: int | None = None,  # test hook: that set panics in its worker
-) -> list[_Raw]: ...
-def trace(
-    points: npt.NDArray[np.float64], method: str, leaf_elimination: bool
-) -> _Trace | None: ...
+) -> list[_Reconstruction]: ...
+def trace(points: npt.NDArray[np.float64], method: str, leaf_elimination: bool) -> Trace | None: ...
+def polygons(
+    points: npt.NDArray[np.float64],
+    loop_vertices: npt.NDArray[np.int64],
+    loop_offsets: npt.NDArray[np.int64],
+) -> list[tuple[int, list[int]]]: ...  # (shell, holes): indices into the loops
 def proximity_graph(
     points: npt.NDArray[np.float64], kind: str, k: int | None = None
 ) -> npt.NDArray[np.int64]: ...

@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+from . import _core
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ._core import _Reconstruction
 
 __all__ = ["Reconstruction"]
 
@@ -22,6 +27,10 @@ STATUSES = (
 
 def _split(flat: np.ndarray, offsets: np.ndarray) -> list[np.ndarray]:
     return [flat[offsets[k] : offsets[k + 1]] for k in range(len(offsets) - 1)]
+
+
+def _same(a: Any, b: Any) -> bool:
+    return a == b if isinstance(a, (str, dict)) else np.array_equal(a, b)
 
 
 class Reconstruction:
@@ -43,6 +52,9 @@ class Reconstruction:
         graph-filter methods (``"crawl"``, ``"peel"``, ...) for open curves; with status
         ``"network"`` paths end at junctions (a path may start and end at the same
         junction).
+    polygons : list of tuple
+        The loops grouped into polygons with holes, ``(shell, holes)`` indices into
+        ``loops``; see the property.
     status : str
         ``"polygon"``, ``"polygons"``, ``"sculpting-stuck"``, ``"curves"`` (loops and open
         paths, not every point on a loop), ``"network"`` (some point has 3 or more edges),
@@ -55,45 +67,75 @@ class Reconstruction:
         Per-stage counts of the run.
     """
 
-    __slots__ = (
-        "_loop_offsets",
-        "_loop_vertices",
-        "_path_offsets",
-        "_path_vertices",
-        "duplicates",
-        "edges",
-        "left_out",
-        "points",
-        "stats",
-        "status",
-    )
+    __slots__ = ("_fields", "_polygons", "points")
 
-    def __init__(self, points: np.ndarray, raw: tuple[Any, ...]) -> None:
-        (
-            self.edges,
-            self._loop_vertices,
-            self._loop_offsets,
-            self._path_vertices,
-            self._path_offsets,
-            self.status,
-            self.left_out,
-            self.duplicates,
-            self.stats,
-        ) = raw
+    def __init__(self, points: np.ndarray, fields: _Reconstruction) -> None:
         self.points = points
+        # The extension's dict as it is: what __eq__ compares and pickling stores.
+        self._fields = fields
+        self._polygons: list[tuple[int, list[int]]] | None = None
+
+    @property
+    def edges(self) -> np.ndarray:
+        return self._fields["edges"]
 
     @property
     def loops(self) -> list[np.ndarray]:
-        return _split(self._loop_vertices, self._loop_offsets)
+        return _split(self._fields["loop_vertices"], self._fields["loop_offsets"])
 
     @property
     def paths(self) -> list[np.ndarray]:
-        return _split(self._path_vertices, self._path_offsets)
+        return _split(self._fields["path_vertices"], self._fields["path_offsets"])
+
+    @property
+    def status(self) -> str:
+        return self._fields["status"]
+
+    @property
+    def left_out(self) -> np.ndarray:
+        return self._fields["left_out"]
+
+    @property
+    def duplicates(self) -> np.ndarray:
+        return self._fields["duplicates"]
+
+    @property
+    def stats(self) -> dict[str, int]:
+        return self._fields["stats"]
 
     @property
     def is_manifold(self) -> bool:
         """True when the loops pass through every distinct point."""
         return self.status in ("polygon", "polygons")
+
+    @property
+    def polygons(self) -> list[tuple[int, list[int]]]:
+        """The loops grouped into polygons with holes: ``(shell, holes)`` pairs of indices
+        into :attr:`loops`, shells in loop order.
+
+        A loop inside an even number of other loops is a shell, and the loops directly
+        inside it are its holes; a loop inside a hole is a shell again. Decided in Rust with
+        exact predicates (``sigdt::Reconstruction::polygons``) on first use, then kept.
+        :meth:`to_shapely`, :meth:`to_geojson` and :meth:`plot` draw these polygons.
+
+        Examples
+        --------
+        Two concentric circles with ``"sig-auto"``: the inner loop is a hole of the outer.
+
+        >>> import numpy as np, sigdt
+        >>> t = np.linspace(0, 2 * np.pi, 40, endpoint=False)
+        >>> circle = np.c_[np.cos(t), np.sin(t)]
+        >>> rec = sigdt.reconstruct(np.r_[3 * circle, circle], method="sig-auto")
+        >>> len(rec.loops), rec.polygons
+        (2, [(0, [1])])
+        """
+        if self._polygons is None:
+            self._polygons = _core.polygons(
+                np.require(self.points, dtype=np.float64, requirements=["C", "A"]),
+                np.require(self._fields["loop_vertices"], dtype=np.int64, requirements=["A"]),
+                np.require(self._fields["loop_offsets"], dtype=np.int64, requirements=["A"]),
+            )
+        return self._polygons
 
     def to_shapely(self) -> Any:
         """The result as a shapely geometry: ``Polygon`` (one loop), ``MultiPolygon``
@@ -124,32 +166,20 @@ class Reconstruction:
     def __repr__(self) -> str:
         return (
             f"Reconstruction(n_points={len(self.points)}, n_edges={len(self.edges)}, "
-            f"n_loops={len(self._loop_offsets) - 1}, status={self.status!r})"
+            f"n_loops={len(self._fields['loop_offsets']) - 1}, status={self.status!r})"
         )
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Reconstruction):
             return NotImplemented
-        return all(
-            a == b if isinstance(a, (str, dict)) else np.array_equal(a, b)
-            for a, b in zip((self.points, *self._raw()), (other.points, *other._raw()))
+        mine, theirs = self._fields, other._fields
+        return (
+            np.array_equal(self.points, other.points)
+            and mine.keys() == theirs.keys()
+            and all(_same(mine[k], theirs[k]) for k in mine)
         )
 
     __hash__ = None  # type: ignore[assignment]  # mutable arrays inside
 
     def __reduce__(self) -> tuple[Any, ...]:
-        return (Reconstruction, (self.points, self._raw()))
-
-    def _raw(self) -> tuple[Any, ...]:
-        """The fields in the order the extension returns them (see ``__init__``)."""
-        return (
-            self.edges,
-            self._loop_vertices,
-            self._loop_offsets,
-            self._path_vertices,
-            self._path_offsets,
-            self.status,
-            self.left_out,
-            self.duplicates,
-            self.stats,
-        )
+        return (Reconstruction, (self.points, self._fields))

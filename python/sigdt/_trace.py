@@ -9,11 +9,9 @@ import numpy as np
 
 from . import _core
 from ._api import LEAF_ELIMINATION, _as_points, _check_method
+from ._core import PHASES  # the names of the codes in Trace.step_phase (Rust's Phase::ALL)
 
 __all__ = ["PHASES", "Trace", "trace"]
-
-#: Names of the phase codes in :attr:`Trace.step_phase`, in code order.
-PHASES = ("inflate", "pocket", "sculpt")
 
 
 def trace(
@@ -76,12 +74,14 @@ def trace(
     """
     _check_method(method)
     array = _as_points(points)
-    raw = _core.trace(array, method, bool(leaf_elimination))
-    return None if raw is None else Trace(array, raw)
+    recorded = _core.trace(array, method, bool(leaf_elimination))
+    return None if recorded is None else Trace(array, recorded)
 
 
 class Trace:
     """The steps of inflating and sculpting of one run; see :func:`sigdt.trace`.
+
+    The replay (:meth:`boundary_at`, :meth:`inside_at`) runs in Rust, on the recorded run.
 
     Attributes
     ----------
@@ -109,7 +109,7 @@ class Trace:
     """
 
     __slots__ = (
-        "_sides",
+        "_recorded",
         "dangling",
         "graph",
         "inflated_at",
@@ -121,19 +121,17 @@ class Trace:
         "triangles",
     )
 
-    def __init__(self, points: np.ndarray, raw: tuple[Any, ...]) -> None:
+    def __init__(self, points: np.ndarray, recorded: _core.Trace) -> None:
         self.points = points
-        (
-            self.triangles,
-            self.graph,
-            self.initial_inside,
-            self.dangling,
-            self.step_triangle,
-            self.step_inside,
-            self.step_phase,
-            self.inflated_at,
-        ) = raw
-        self._sides: tuple[np.ndarray, ...] | None = None
+        self._recorded = recorded  # the Rust trace, which replays the steps
+        self.triangles = recorded.triangles
+        self.graph = recorded.graph
+        self.initial_inside = recorded.initial_inside
+        self.dangling = recorded.dangling
+        self.step_triangle = recorded.step_triangle
+        self.step_inside = recorded.step_inside
+        self.step_phase = recorded.step_phase
+        self.inflated_at = recorded.inflated_at
 
     @property
     def n_steps(self) -> int:
@@ -153,18 +151,6 @@ class Trace:
         if not 0 <= step <= self.n_steps:
             raise IndexError(f"step must be in 0..={self.n_steps}, got {step}")
         return step
-
-    def _replay(self, step: int) -> tuple[np.ndarray, np.ndarray]:
-        """Labels after ``step`` steps and whether each triangle was ever interior."""
-        tri, ins = self.step_triangle[:step], self.step_inside[:step]
-        last = np.full(len(self.triangles), -1, dtype=np.int64)
-        np.maximum.at(last, tri, np.arange(step, dtype=np.int64))
-        inside = self.initial_inside.copy()
-        changed = last >= 0
-        inside[changed] = ins[last[changed]]
-        ever = self.initial_inside.copy()
-        ever[tri[ins]] = True
-        return inside, ever
 
     def inside_at(self, step: int) -> np.ndarray:
         """The triangle labels after the first ``step`` steps.
@@ -186,7 +172,7 @@ class Trace:
         TypeError
             ``step`` is not an int.
         """
-        return self._replay(self._check_step(step))[0]
+        return self._recorded.inside_at(self._check_step(step))
 
     def boundary_at(self, step: int) -> np.ndarray:
         """The boundary after the first ``step`` steps.
@@ -212,34 +198,7 @@ class Trace:
         TypeError
             ``step`` is not an int.
         """
-        inside, ever = self._replay(self._check_step(step))
-        edges, left, right, dangling = self._edge_sides()
-        # Index -1 (the outside of the hull) reads the appended False.
-        inside, ever = np.append(inside, False), np.append(ever, False)
-        differ = inside[left] != inside[right]
-        still_dangling = dangling & ~ever[left] & ~ever[right]
-        return np.ascontiguousarray(edges[differ | still_dangling])
-
-    def _edge_sides(self) -> tuple[np.ndarray, ...]:
-        """Every edge once (sorted), its two triangles (-1 outside the hull), and whether it
-        was dangling at the start; computed once."""
-        if self._sides is None:
-            tri = self.triangles
-            pairs = np.sort(tri[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
-            owner = np.repeat(np.arange(len(tri), dtype=np.int64), 3)
-            edges, inverse = np.unique(pairs, axis=0, return_inverse=True)
-            inverse = inverse.reshape(-1)
-            order = np.argsort(inverse, kind="stable")
-            counts = np.bincount(inverse, minlength=len(edges))
-            starts = np.cumsum(counts) - counts
-            left = owner[order[starts]]
-            second = order[np.minimum(starts + 1, len(order) - 1)]
-            right = np.where(counts == 2, owner[second], -1)
-            n = int(edges.max()) + 1 if len(edges) else 1
-            keys = edges[:, 0] * n + edges[:, 1]
-            dangling = np.isin(keys, self.dangling[:, 0] * n + self.dangling[:, 1])
-            self._sides = (edges.astype(np.int64), left, right, dangling)
-        return self._sides
+        return self._recorded.boundary_at(self._check_step(step))
 
     def __repr__(self) -> str:
         return (

@@ -28,13 +28,11 @@ def plot(rec: Reconstruction, ax: Any = None, **style: Any) -> Any:
     from matplotlib.patches import PathPatch
     from matplotlib.path import Path
 
-    from .shapely import _nested
-
     if ax is None:
         _, ax = plt.subplots()
     pts = rec.points
     rings = [pts[loop] for loop in rec.loops]
-    for shell, holes in _nested(rings):
+    for shell, holes in rec.polygons:
         # Holes clockwise against the counter-clockwise shell: a hole under either fill rule.
         parts = [rings[shell]] + [rings[h][::-1] for h in holes]
         vertices = np.concatenate([np.r_[r, r[:1]] for r in parts])
@@ -150,8 +148,9 @@ def plot_steps(
         if len(axes) < len(steps):
             raise ValueError(f"{len(steps)} steps need as many axes, got {len(axes)}")
         fig = axes[0].figure if axes else plt.figure()
+    triangle_edges = _triangle_edges(tr.triangles)
     for ax, k in zip(axes, steps):
-        _draw_step(ax, tr, k)
+        _draw_step(ax, tr, k, triangle_edges)
     return fig
 
 
@@ -162,6 +161,12 @@ def _default_steps(n_steps: int, inflated_at: int) -> list[int]:
     return sorted({int(k) for k in np.r_[inflate, sculpt]})
 
 
+def _triangle_edges(triangles: np.ndarray) -> np.ndarray:
+    """Every edge of the triangles once, ``(m, 2)`` with ``i < j``, sorted."""
+    pairs = np.sort(triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
+    return np.unique(pairs, axis=0)
+
+
 def _step_title(tr: Trace, k: int) -> str:
     if k == 0:
         return "start"
@@ -170,11 +175,10 @@ def _step_title(tr: Trace, k: int) -> str:
     return f"sculpt {k - tr.inflated_at}/{tr.n_steps - tr.inflated_at}"
 
 
-def _draw_step(ax: Any, tr: Trace, k: int) -> None:
+def _draw_step(ax: Any, tr: Trace, k: int, edges: np.ndarray) -> None:
     from matplotlib.collections import LineCollection, PolyCollection
 
     pts = np.asarray(tr.points)
-    edges = tr._edge_sides()[0]
     ax.add_collection(LineCollection(pts[edges], colors="#d0d0d0", linewidths=0.4, zorder=0))
     inside = tr.inside_at(k)
     ax.add_collection(PolyCollection(pts[tr.triangles[inside]], facecolors="#dbe9f6", zorder=1))

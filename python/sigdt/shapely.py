@@ -16,41 +16,18 @@ def _rings(rec: Reconstruction) -> list[np.ndarray]:
     return [rec.points[loop] for loop in rec.loops]
 
 
-def _inside(point: np.ndarray, ring: np.ndarray) -> bool:
-    """Whether ``point`` lies inside the closed ring (even-odd rule)."""
-    x, y = point
-    a, b = ring, np.roll(ring, -1, axis=0)
-    crosses = (a[:, 1] > y) != (b[:, 1] > y)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        at = a[:, 0] + (y - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
-    return bool(np.count_nonzero(crosses & (x < at)) % 2)
-
-
-def _nested(rings: list[np.ndarray]) -> list[tuple[int, list[int]]]:
-    """Loops grouped into polygons with holes: ``(shell, holes)`` index pairs. Loops never
-    cross or touch, so a loop lies inside another when one of its points does; a loop inside
-    an even number of others is a shell, and the loops directly inside it are its holes."""
-    k = len(rings)
-    inside = [[j for j in range(k) if j != i and _inside(rings[i][0], rings[j])] for i in range(k)]
-    depth = [len(c) for c in inside]
-    polygons = []
-    for shell in (i for i in range(k) if depth[i] % 2 == 0):
-        holes = [i for i in range(k) if depth[i] == depth[shell] + 1 and shell in inside[i]]
-        polygons.append((shell, holes))
-    return polygons
-
-
 def to_shapely(rec: Reconstruction) -> Any:
     """The loops as polygons and the open paths as lines. A loop inside another one (SIG-AUTO
     returns nested curves, such as the two outlines of an ``O``) is a hole of it, and a loop
-    inside that hole is a new polygon again. ``Polygon`` for one polygon, ``MultiPolygon``
-    for several, ``LineString`` for one open path or an empty result, ``MultiLineString``
-    for several paths, ``GeometryCollection`` for polygons and paths together."""
+    inside that hole is a new polygon again: :attr:`~sigdt.Reconstruction.polygons`, decided
+    with exact predicates. ``Polygon`` for one polygon, ``MultiPolygon`` for several,
+    ``LineString`` for one open path or an empty result, ``MultiLineString`` for several
+    paths, ``GeometryCollection`` for polygons and paths together."""
     import shapely
 
     rings = _rings(rec)
     polygons = [
-        shapely.Polygon(rings[shell], [rings[h] for h in holes]) for shell, holes in _nested(rings)
+        shapely.Polygon(rings[shell], [rings[h] for h in holes]) for shell, holes in rec.polygons
     ]
     lines = [rec.points[p] for p in rec.paths]
     if len(polygons) == 1 and not lines:
@@ -85,7 +62,7 @@ def to_geojson(rec: Reconstruction) -> dict[str, Any]:
     loops, paths = rec.loops, rec.paths
     polygons = [
         [ring(loops[shell])] + [ring(loops[h][::-1]) for h in holes]
-        for shell, holes in _nested(_rings(rec))
+        for shell, holes in rec.polygons
     ]
     lines = [rec.points[p].tolist() for p in paths]
     geometries = [{"type": "Polygon", "coordinates": p} for p in polygons] + [

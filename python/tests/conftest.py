@@ -1,4 +1,4 @@
-"""Shared fixtures: the labelled curves of ../shared/data and the built CLI binary."""
+"""Shared fixtures: the repository's labelled curves (data/curves) and the built CLI binary."""
 
 from __future__ import annotations
 
@@ -24,9 +24,9 @@ def repo_root() -> Path:
 
 @pytest.fixture(scope="session")
 def curves_dir() -> Path:
-    """``$SIGDT_DATA``, else ``../shared/data/curves`` next to the repository."""
+    """``$SIGDT_DATA``, else the repository's ``data/curves``."""
     env = os.environ.get("SIGDT_DATA")
-    path = Path(env) if env else ROOT.parent / "shared" / "data" / "curves"
+    path = Path(env) if env else ROOT / "data" / "curves"
     if not path.is_dir() or not any(path.glob("*.xy")):
         pytest.fail(
             f"the labelled curves are missing: no *.xy in {path} "

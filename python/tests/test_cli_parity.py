@@ -1,4 +1,4 @@
-"""The CLI and Python give the same edges on every labelled case of ../shared/data/curves.
+"""The CLI and Python give the same edges on every labelled case of data/curves.
 
 The CLI runs once per case (``sigdt reconstruct NAME.xy --format edges``, four at a time);
 Python reads the same file with ``sigdt.read_points`` and reconstructs it.

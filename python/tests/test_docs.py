@@ -170,3 +170,25 @@ def test_stub_classes_have_the_runtime_bases():
             bases = [b.id for b in node.bases]
             runtime = getattr(_core, node.name)
             assert [b.__name__ for b in runtime.__bases__] == bases, node.name
+
+
+def test_stub_classes_have_the_runtime_members():
+    # Properties in the stub are getters at runtime, methods are methods with the same
+    # parameters; the exceptions have no public members.
+    for node in _stub().body:
+        if not isinstance(node, ast.ClassDef):
+            continue
+        runtime = getattr(_core, node.name)
+        members = {n: v for n, v in vars(runtime).items() if not n.startswith("_")}
+        stub = {n.name: n for n in node.body if isinstance(n, ast.FunctionDef)}
+        assert set(stub) == set(members), node.name
+        for name, definition in stub.items():
+            is_property = any(
+                getattr(d, "id", None) == "property" for d in definition.decorator_list
+            )
+            member = members[name]
+            assert is_property == inspect.isgetsetdescriptor(member), f"{node.name}.{name}"
+            if not is_property:
+                stub_args = [a.arg for a in definition.args.args[1:]]
+                runtime_args = list(inspect.signature(member).parameters)[1:]
+                assert stub_args == runtime_args, f"{node.name}.{name}"

@@ -32,7 +32,9 @@ def _degrees(edges: np.ndarray, n: int) -> np.ndarray:
 
 def test_core_trace_returns_the_documented_arrays():
     raw = _core.trace(np.asarray(blob(80)), "sig-connect2d", True)
-    triangles, graph, inside, dangling, tri, ins, phase, inflated_at = raw
+    triangles, graph, inside, dangling = raw.triangles, raw.graph, raw.initial_inside, raw.dangling
+    tri, ins, phase = raw.step_triangle, raw.step_inside, raw.step_phase
+    inflated_at = raw.inflated_at
     assert triangles.dtype == np.int64 and triangles.shape[1] == 3
     assert graph.dtype == dangling.dtype == tri.dtype == np.int64
     assert graph.shape[1] == dangling.shape[1] == 2

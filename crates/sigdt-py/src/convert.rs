@@ -1,11 +1,12 @@
 //! Conversions between numpy / Python values and the core's types, and error mapping.
 use numpy::{
-    IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods,
+    IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
+    PyUntypedArrayMethods,
 };
 use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
-use sigdt::{Edge, Phase, Point, Reconstruction, Status, Trace};
+use pyo3::types::PyDict;
+use sigdt::{Edge, Point, Reconstruction, Status};
 
 pyo3::create_exception!(
     sigdt,
@@ -85,10 +86,39 @@ pub fn chains<'py>(
     (flat.into_pyarray(py), offsets.into_pyarray(py))
 }
 
-/// The tuple `python/sigdt/_result.py` builds a `Reconstruction` from:
-/// `(edges, loop_vertices, loop_offsets, path_vertices, path_offsets, status, left_out,
-/// duplicates, stats)`.
-pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bound<'py, PyTuple>> {
+/// The chains of a flat int64 vector and its offsets, the inverse of [`chains`]: the offsets
+/// must run from 0 to the vector's length without decreasing, and every vertex must be a
+/// point index below `n`.
+pub fn chains_from(
+    vertices: &PyReadonlyArray1<'_, i64>,
+    offsets: &PyReadonlyArray1<'_, i64>,
+    n: usize,
+) -> PyResult<Vec<Vec<usize>>> {
+    let vertices: Vec<i64> = vertices.as_array().iter().copied().collect();
+    let offsets: Vec<i64> = offsets.as_array().iter().copied().collect();
+    if let Some(v) = vertices.iter().find(|&&v| !(0..n as i64).contains(&v)) {
+        return Err(PyValueError::new_err(format!("vertex {v} is not a point index (0..{n})")));
+    }
+    let runs = offsets.first() == Some(&0)
+        && offsets.last() == Some(&(vertices.len() as i64))
+        && offsets.windows(2).all(|w| w[0] <= w[1]);
+    if !runs {
+        return Err(PyValueError::new_err(format!(
+            "offsets must rise from 0 to {} (the number of vertices)",
+            vertices.len()
+        )));
+    }
+    Ok(offsets
+        .windows(2)
+        .map(|w| vertices[w[0] as usize..w[1] as usize].iter().map(|&v| v as usize).collect())
+        .collect())
+}
+
+/// The dict `python/sigdt/_result.py` builds a `Reconstruction` from (the `_Reconstruction`
+/// TypedDict of `_core.pyi`): `edges`, `loop_vertices`, `loop_offsets`, `path_vertices`,
+/// `path_offsets` (int64 arrays, chains as by [`chains`]), `status` (its name), `left_out`,
+/// `duplicates` (int64 arrays) and `stats` (a dict of counts).
+pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bound<'py, PyDict>> {
     let (loop_vertices, loop_offsets) = chains(py, &rec.loops);
     let (path_vertices, path_offsets) = chains(py, &rec.paths);
     let left_out: &[usize] = match &rec.status {
@@ -110,45 +140,15 @@ pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bo
     ] {
         stats.set_item(name, value)?;
     }
-    PyTuple::new(
-        py,
-        [
-            edges(py, &rec.edges)?.into_any(),
-            loop_vertices.into_any(),
-            loop_offsets.into_any(),
-            path_vertices.into_any(),
-            path_offsets.into_any(),
-            rec.status.name().into_pyobject(py)?.into_any(),
-            indices(py, left_out).into_any(),
-            edges(py, &rec.duplicates)?.into_any(),
-            stats.into_any(),
-        ],
-    )
-}
-
-/// The tuple `python/sigdt/_trace.py` builds a `Trace` from: `(triangles (T, 3) int64,
-/// graph (m, 2) int64, initial_inside (T,) bool, dangling (d, 2) int64, step_triangle (S,)
-/// int64, step_inside (S,) bool, step_phase (S,) uint8, inflated_at)`; phase codes index
-/// `Phase::ALL` (0 inflate, 1 pocket, 2 sculpt).
-pub fn trace<'py>(py: Python<'py>, trace: &Trace) -> PyResult<Bound<'py, PyTuple>> {
-    let flat: Vec<i64> = trace.triangles.iter().flatten().map(|&v| v as i64).collect();
-    let triangles = flat.into_pyarray(py).reshape([trace.triangles.len(), 3])?;
-    let steps = &trace.steps;
-    let step_triangle: Vec<usize> = steps.iter().map(|s| s.triangle).collect();
-    let step_inside: Vec<bool> = steps.iter().map(|s| s.inside).collect();
-    let code = |p: Phase| Phase::ALL.iter().position(|&q| q == p).unwrap_or(0) as u8;
-    let step_phase: Vec<u8> = steps.iter().map(|s| code(s.phase)).collect();
-    PyTuple::new(
-        py,
-        [
-            triangles.into_any(),
-            edges(py, &trace.graph)?.into_any(),
-            trace.initial_inside.clone().into_pyarray(py).into_any(),
-            edges(py, &trace.dangling)?.into_any(),
-            indices(py, &step_triangle).into_any(),
-            step_inside.into_pyarray(py).into_any(),
-            step_phase.into_pyarray(py).into_any(),
-            trace.inflated_at.into_pyobject(py)?.into_any(),
-        ],
-    )
+    let dict = PyDict::new(py);
+    dict.set_item("edges", edges(py, &rec.edges)?)?;
+    dict.set_item("loop_vertices", loop_vertices)?;
+    dict.set_item("loop_offsets", loop_offsets)?;
+    dict.set_item("path_vertices", path_vertices)?;
+    dict.set_item("path_offsets", path_offsets)?;
+    dict.set_item("status", rec.status.name())?;
+    dict.set_item("left_out", indices(py, left_out))?;
+    dict.set_item("duplicates", edges(py, &rec.duplicates)?)?;
+    dict.set_item("stats", stats)?;
+    Ok(dict)
 }

@@ -1,31 +1,33 @@
 //! Python bindings of `sigdt`, built by maturin as `sigdt._core`.
 //!
 //! This crate only converts types: numpy arrays in (borrowed, not copied, when C-contiguous
-//! float64), numpy arrays and plain tuples out, core errors to Python exceptions, panics to
-//! `InternalError`. The user-facing names, defaults and docstrings live in `python/sigdt`.
+//! float64); numpy arrays, dicts with named keys and the `Trace` class out; core errors to
+//! Python exceptions, panics to `InternalError`. The user-facing names, defaults and
+//! docstrings live in `python/sigdt`.
 mod convert;
 mod eval;
+mod replay;
 
 use convert::{err, guarded, points, InternalError, InvalidInputError, ParseError};
-use numpy::{IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray2};
+use numpy::{IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyTuple};
+use pyo3::types::{PyDict, PyList};
 use rayon::prelude::*;
-use sigdt::{GraphKind, Method, Options};
+use sigdt::{GraphKind, Method, Options, Phase};
 
 fn options(method: &str, leaf_elimination: bool) -> PyResult<Options> {
     let method: Method = method.parse().map_err(err)?;
     Ok(Options { method, leaf_elimination })
 }
 
-/// `reconstruct(points, method, leaf_elimination) -> tuple` (see convert::reconstruction).
+/// `reconstruct(points, method, leaf_elimination) -> dict` (see convert::reconstruction).
 #[pyfunction]
 fn reconstruct<'py>(
     py: Python<'py>,
     points: PyReadonlyArray2<'py, f64>,
     method: &str,
     leaf_elimination: bool,
-) -> PyResult<Bound<'py, PyTuple>> {
+) -> PyResult<Bound<'py, PyDict>> {
     let options = options(method, leaf_elimination)?;
     let pts = convert::points(&points)?;
     let rec = py
@@ -35,7 +37,7 @@ fn reconstruct<'py>(
     convert::reconstruction(py, &rec)
 }
 
-/// `reconstruct_many(point_sets, method, leaf_elimination, n_jobs) -> list[tuple]`, in
+/// `reconstruct_many(point_sets, method, leaf_elimination, n_jobs) -> list[dict]`, in
 /// parallel with the GIL released; an error names the failing set.
 ///
 /// `_panic_in_set` is a test hook (not exposed by `sigdt.reconstruct_many`): the set with
@@ -102,22 +104,42 @@ fn reconstruct_many<'py>(
     Ok(list)
 }
 
-/// `trace(points, method, leaf_elimination) -> tuple | None` (see convert::trace): the
-/// steps of inflating and sculpting, `None` for graph filters and degenerate input.
+/// `trace(points, method, leaf_elimination) -> Trace | None`: the steps of inflating and
+/// sculpting, `None` for graph filters and degenerate input.
 #[pyfunction]
-fn trace<'py>(
-    py: Python<'py>,
-    points: PyReadonlyArray2<'py, f64>,
+fn trace(
+    py: Python<'_>,
+    points: PyReadonlyArray2<'_, f64>,
     method: &str,
     leaf_elimination: bool,
-) -> PyResult<Option<Bound<'py, PyTuple>>> {
+) -> PyResult<Option<replay::Trace>> {
     let options = options(method, leaf_elimination)?;
     let pts = convert::points(&points)?;
     let (_, trace) = py
         .detach(|| guarded(|| sigdt::reconstruct_traced(pts, &options)))
         .map_err(InternalError::new_err)?
         .map_err(err)?;
-    trace.map(|t| convert::trace(py, &t)).transpose()
+    Ok(trace.map(replay::Trace))
+}
+
+/// `polygons(points, loop_vertices, loop_offsets) -> list[(shell, holes)]`: the loops (flat,
+/// as `reconstruct` returns them) grouped into polygons with holes by
+/// `sigdt::Reconstruction::polygons`, with exact predicates; indices into the loops.
+#[pyfunction]
+fn polygons(
+    py: Python<'_>,
+    points: PyReadonlyArray2<'_, f64>,
+    loop_vertices: PyReadonlyArray1<'_, i64>,
+    loop_offsets: PyReadonlyArray1<'_, i64>,
+) -> PyResult<Vec<(usize, Vec<usize>)>> {
+    let pts = convert::points(&points)?;
+    let loops = convert::chains_from(&loop_vertices, &loop_offsets, pts.len())?;
+    let rec = sigdt::Reconstruction { loops, ..Default::default() };
+    let polygons = py
+        .detach(|| guarded(|| Ok(rec.polygons(pts))))
+        .map_err(InternalError::new_err)?
+        .map_err(err)?;
+    Ok(polygons.into_iter().map(|p| (p.shell, p.holes)).collect())
 }
 
 /// `proximity_graph(points, kind, k) -> (m, 2) int64 array`.
@@ -156,6 +178,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(reconstruct, m)?)?;
     m.add_function(wrap_pyfunction!(reconstruct_many, m)?)?;
     m.add_function(wrap_pyfunction!(trace, m)?)?;
+    m.add_function(wrap_pyfunction!(polygons, m)?)?;
     m.add_function(wrap_pyfunction!(proximity_graph, m)?)?;
     m.add_function(wrap_pyfunction!(read_points, m)?)?;
     m.add_function(wrap_pyfunction!(eval::evaluate, m)?)?;
@@ -164,8 +187,10 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("InvalidInputError", m.py().get_type::<InvalidInputError>())?;
     m.add("ParseError", m.py().get_type::<ParseError>())?;
     m.add("InternalError", m.py().get_type::<InternalError>())?;
+    m.add_class::<replay::Trace>()?;
     m.add("METHODS", Method::ALL.iter().map(|m| m.name()).collect::<Vec<_>>())?;
     m.add("GRAPH_KINDS", GraphKind::NAMES.to_vec())?;
+    m.add("PHASES", Phase::ALL.iter().map(|p| p.name()).collect::<Vec<_>>())?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
