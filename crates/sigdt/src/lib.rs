@@ -46,7 +46,7 @@ pub use method::{
     reconstruct, reconstruct_on, reconstruct_traced, reconstruct_traced_on, Method, Options,
 };
 pub use proximity::{nearest_neighbour_distances, proximity_graph, proximity_graph_on, GraphKind};
-pub use result::{Polygon, Reconstruction, Stats, Status};
+pub use result::{LeftOut, LeftOutReason, Polygon, Reconstruction, Stats, Status, Vertices};
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

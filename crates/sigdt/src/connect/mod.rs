@@ -17,7 +17,7 @@ pub(crate) mod trace;
 
 use crate::delaunay::Triangulation;
 use crate::graph::EdgeMask;
-use crate::result::{Reconstruction, Stats, Status};
+use crate::result::{inside_left_out, Reconstruction, Stats, Status, Vertices};
 use boundary::Boundary;
 use extract::{loop_edges, loops};
 use inflate::inflate;
@@ -59,11 +59,12 @@ pub(crate) fn inflate_and_sculpt_traced(
         trace.inflated_at = inflated_at;
     }
     let loops = loops(&bd);
-    let status = if bd.interior > 0 {
-        let mut left_out: Vec<usize> =
-            bd.interior_vertices().into_iter().map(|v| dt.input_index(v)).collect();
-        left_out.sort_unstable();
-        Status::SculptingStuck { left_out }
+    let mut inside: Vec<usize> =
+        bd.interior_vertices().into_iter().map(|v| dt.input_index(v)).collect();
+    inside.sort_unstable();
+    let left_out = inside_left_out(&inside);
+    let status = if !inside.is_empty() {
+        Status::SculptingStuck { left_out: inside }
     } else if loops.len() == 1 {
         Status::Polygon
     } else {
@@ -75,6 +76,8 @@ pub(crate) fn inflate_and_sculpt_traced(
         paths: Vec::new(),
         status,
         duplicates: dt.duplicates().to_vec(),
+        left_out,
+        vertices: Vertices::Input,
         stats,
     };
     (rec, trace)

@@ -4,13 +4,19 @@
 //! two distinct valid indices and are sorted and unique; loops and paths are simple and
 //! disjoint (paths may share a junction end in a network) and agree with the edges; a
 //! manifold status means every distinct point has degree 2; no two output edges cross.
-use crate::geometry::Edge;
-use crate::geometry::{segments_cross, Point};
-use crate::result::{Reconstruction, Status};
+use crate::geometry::{segments_cross, Edge, Point};
+use crate::result::{LeftOutReason, Reconstruction, Status, Vertices};
 use std::collections::HashMap;
 
 /// Checks the output invariants of `rec` for `points`; the error says what is violated.
 pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<(), String> {
+    let points: &[Point] = match &rec.vertices {
+        Vertices::Input => points,
+        Vertices::Moved(moved) if moved.len() != points.len() => {
+            return Err(format!("{} moved points for {} points", moved.len(), points.len()));
+        }
+        Vertices::Moved(moved) | Vertices::New(moved) => moved,
+    };
     let n = points.len();
     for w in rec.edges.windows(2) {
         if w[0] >= w[1] {
@@ -83,6 +89,28 @@ pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<()
         if left_out.is_empty() || left_out.iter().any(|&v| v >= n || on_chain[v]) {
             return Err("left-out points must be off every loop".into());
         }
+        let inside: Vec<usize> = rec
+            .left_out
+            .iter()
+            .filter(|l| l.reason == LeftOutReason::Inside)
+            .map(|l| l.index)
+            .collect();
+        if &inside != left_out {
+            return Err("the status's left-out points differ from left_out".into());
+        }
+    }
+    for w in rec.left_out.windows(2) {
+        if w[0].index >= w[1].index {
+            return Err(format!("left_out not sorted and unique at {:?}, {:?}", w[0], w[1]));
+        }
+    }
+    let has_edge: Vec<bool> = {
+        let mut has = vec![false; n];
+        rec.edges.iter().flatten().for_each(|&v| has[v] = true);
+        has
+    };
+    if let Some(l) = rec.left_out.iter().find(|l| l.index >= n || has_edge[l.index]) {
+        return Err(format!("left-out point {} is out of range or has an edge", l.index));
     }
     if let Some((a, b)) = first_crossing(points, &rec.edges) {
         return Err(format!("edges {a:?} and {b:?} cross"));

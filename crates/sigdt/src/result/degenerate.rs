@@ -4,7 +4,7 @@
 //! - fewer than three distinct points: none or one edge, status `TooFewPoints`;
 //! - all distinct points on one line: the path through them in their order along the line,
 //!   status `Collinear`.
-use super::{Reconstruction, Stats, Status};
+use super::{Reconstruction, Stats, Status, Vertices};
 use crate::delaunay::{Shape, Triangulation};
 
 /// The result for a triangulation without triangles, or `None` for a proper one.
@@ -25,6 +25,8 @@ pub(crate) fn degenerate_result(dt: &Triangulation) -> Option<Reconstruction> {
         paths,
         status,
         duplicates: dt.duplicates().to_vec(),
+        left_out: Vec::new(),
+        vertices: Vertices::Input,
         stats: Stats {
             points: dt.input_len(),
             distinct_points: dt.num_vertices(),

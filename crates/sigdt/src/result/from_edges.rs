@@ -17,7 +17,7 @@
 //!
 //! # Complexity
 //! O(m log m) for `m` edges (the sort), O(n + m) for the walk.
-use super::{Reconstruction, Stats, Status};
+use super::{Reconstruction, Stats, Status, Vertices};
 use crate::delaunay::Triangulation;
 use crate::geometry::orient2d;
 use crate::graph::chains;
@@ -77,6 +77,8 @@ pub(crate) fn from_vertex_pairs(
         paths,
         status,
         duplicates: dt.duplicates().to_vec(),
+        left_out: Vec::new(),
+        vertices: Vertices::Input,
         stats,
     }
 }

@@ -10,14 +10,20 @@ pub(crate) use degenerate::degenerate_result;
 pub(crate) use from_edges::from_vertex_pairs;
 pub use polygons::Polygon;
 
-use crate::geometry::Edge;
+/// The [`LeftOut`] entries of points left inside when sculpting got stuck (input indices,
+/// sorted).
+pub(crate) fn inside_left_out(indices: &[usize]) -> Vec<LeftOut> {
+    indices.iter().map(|&index| LeftOut { index, reason: LeftOutReason::Inside }).collect()
+}
+
+use crate::geometry::{Edge, Point};
 
 /// The result of [`reconstruct`](crate::reconstruct()).
 ///
 /// All indices are 0-based indices into the caller's points. Exact duplicates take part
 /// through their lowest-index representative: they get no edges and are listed in
 /// [`duplicates`](Self::duplicates).
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Reconstruction {
     /// Undirected edges `[i, j]`, `i < j`, sorted.
     pub edges: Vec<Edge>,
@@ -34,8 +40,74 @@ pub struct Reconstruction {
     pub status: Status,
     /// `[duplicate, representative]` for every point equal to a lower-index point, sorted.
     pub duplicates: Vec<Edge>,
+    /// The distinct points the method left out on purpose, each with the reason, sorted by
+    /// index. They get no edges. (Duplicates are not listed here.)
+    pub left_out: Vec<LeftOut>,
+    /// Where the vertices of the edges, loops and paths are: the input points, unless the
+    /// method moves them or places its own.
+    pub vertices: Vertices,
     /// Per-stage counts, for diagnostics and benchmarks.
     pub stats: Stats,
+}
+
+/// A distinct input point that a method left out on purpose.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct LeftOut {
+    /// The point's input index.
+    pub index: usize,
+    /// Why it has no edge.
+    pub reason: LeftOutReason,
+}
+
+/// Why a method left a point out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[non_exhaustive]
+pub enum LeftOutReason {
+    /// Sculpting found no candidate triangle while the point was still inside the boundary
+    /// ([`Status::SculptingStuck`]).
+    Inside,
+    /// The method's outlier criterion says the point is a sample of no curve.
+    Outlier,
+    /// FITCONNECT eliminated it (redundant between two linked points, inside an edge, or a
+    /// one-point obstacle).
+    Eliminated,
+    /// FITCONNECT's fitted neighbourhood of the point never conformed.
+    NonConforming,
+}
+
+impl LeftOutReason {
+    /// Every reason, in the order of their names' listing.
+    pub const ALL: [LeftOutReason; 4] = [
+        LeftOutReason::Inside,
+        LeftOutReason::Outlier,
+        LeftOutReason::Eliminated,
+        LeftOutReason::NonConforming,
+    ];
+
+    /// The kebab-case name: `inside`, `outlier`, `eliminated` or `non-conforming`.
+    pub fn name(self) -> &'static str {
+        match self {
+            LeftOutReason::Inside => "inside",
+            LeftOutReason::Outlier => "outlier",
+            LeftOutReason::Eliminated => "eliminated",
+            LeftOutReason::NonConforming => "non-conforming",
+        }
+    }
+}
+
+/// Where a result's vertices are.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum Vertices {
+    /// The input points: edges, loops and paths hold input indices (every method but the
+    /// two below).
+    #[default]
+    Input,
+    /// Every input point moved to a new position, by index (STRETCHDENOISE moves points
+    /// within their noise extents); edges still hold input indices.
+    Moved(Vec<Point>),
+    /// The method's own vertices (OPTIMALTRANSPORT places them where the transport plan
+    /// puts them): edges, loops and paths index these, not the input.
+    New(Vec<Point>),
 }
 
 /// How a reconstruction ended.

@@ -48,7 +48,9 @@ mod spur_path;
 use crate::delaunay::Triangulation;
 use crate::geometry::distance;
 use crate::proximity::sigdt::TIE_SLACK;
-use crate::result::{degenerate_result, from_vertex_pairs, Reconstruction, Stats, Status};
+use crate::result::{
+    degenerate_result, from_vertex_pairs, inside_left_out, Reconstruction, Stats, Status,
+};
 use crate::sig_connect2d::sig_connect2d_on;
 use chain_join::Chains;
 #[doc(hidden)]
@@ -108,6 +110,7 @@ pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstr
     let mut rec = from_vertex_pairs(dt, pairs, stats);
     if !left_out.is_empty() {
         left_out.sort_unstable();
+        rec.left_out = inside_left_out(&left_out);
         rec.status = Status::SculptingStuck { left_out };
     }
     rec
