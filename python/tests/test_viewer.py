@@ -1,16 +1,20 @@
 """The HTML viewer in a real browser: Debian's chromium driven by Python playwright.
 
-The page for ``data/inputs/glyph_n_tilde.xy`` (with its ``.gt``) is opened from ``file://``;
+The page for ``data/inputs/glyph_e_reversed.xy`` (with its ``.gt``) is opened from ``file://``;
 the test toggles a layer, moves the step slider the way a user does (value + ``input``
 event), and checks that the canvas is drawn, that the replay changes it, that the status
 text follows, and that the page logs nothing, raises nothing and requests nothing but
-itself. Nothing is downloaded at run time: a missing chromium or playwright fails the test
-with the command that installs it.
+itself. It also checks the page's data: the trace is replayed in Rust (the initial
+boundary, and per step the triangle, the phase code and the boundary edges it toggles), so
+the page's boundary after inflating and at the end must be the kernel's. Nothing is
+downloaded at run time: a missing chromium or playwright fails the test with the command
+that installs it.
 """
 
 from __future__ import annotations
 
 import io
+import json
 import os
 import re
 import subprocess
@@ -23,6 +27,16 @@ import pytest
 CHROMIUM = Path(os.environ.get("CHROMIUM", "/usr/bin/chromium"))
 CASE = "glyph_e_reversed"  # inflating (46 triangles) and sculpting (4) both have steps
 NO_TRACE = "no trace (method has no inflating/sculpting)"
+#: The page's boundary after s steps as sorted [i, j] pairs; the page is left at step 0.
+BOUNDARY_AT = """(s) => {
+  const trace = window.sigdtView.model.trace;
+  trace.seek(s);
+  const flat = trace.boundary();
+  trace.seek(0);
+  const edges = [];
+  for (let k = 0; k < flat.length; k += 2) edges.push([flat[k], flat[k + 1]]);
+  return edges.sort((p, q) => p[0] - q[0] || p[1] - q[1]);
+}"""
 
 
 def viewer_page(cli: Path, repo_root: Path, out: Path, *, trace: bool = True) -> Path:
@@ -126,6 +140,34 @@ def test_page_loads_nothing_from_elsewhere(pages):
         assert "@import" not in html
 
 
+def page_data(path: Path) -> dict:
+    """The JSON data embedded in a viewer page."""
+    element = r'<script type="application/json" id="data">(.*?)</script>'
+    found = re.search(element, path.read_text(encoding="utf-8"), re.DOTALL)
+    assert found, f"{path.name}: no data element"
+    return json.loads(found.group(1))
+
+
+def test_page_data_carries_the_replay(pages):
+    data = page_data(pages["trace"])
+    trace = data["trace"]
+    assert trace["phases"] == ["inflate", "pocket", "sculpt"]
+    n, triangles = len(data["points"]), len(trace["triangles"])
+    assert len(trace["initial_inside"]) == triangles
+    assert trace["initial_boundary"] == sorted(trace["initial_boundary"])
+    codes = [phase for _, phase, _ in trace["steps"]]
+    inflate, pocket, sculpt = range(3)
+    inflating, sculpting = codes[: trace["inflated_at"]], codes[trace["inflated_at"] :]
+    assert inflate in inflating and set(inflating) <= {inflate, pocket}
+    assert sculpting and set(sculpting) == {sculpt}
+    for t, _, toggled in trace["steps"]:
+        assert 0 <= t < triangles
+        assert toggled and toggled == sorted(toggled), "a step toggles sorted edges"
+        assert all(0 <= i < j < n for i, j in toggled)
+    assert set(data["layers"]) == {"dt", "sigdt", "sigdt2", "boundary", "result", "gt"}
+    assert page_data(pages["no-trace"])["trace"] is None
+
+
 def test_replay_in_the_browser(browser, pages):
     view = Page(browser, pages["trace"])
     page = view.page
@@ -156,6 +198,13 @@ def test_replay_in_the_browser(browser, pages):
     assert view.text("#status") == "final"
     view.set_step("0")
     assert view.text("#status") == "initial"
+    # The page only applies the kernel's steps: its boundary after inflating is the
+    # "boundary" layer, and at the end it is the result (a polygon).
+    data = page_data(pages["trace"])
+    trace = data["trace"]
+    assert page.evaluate(BOUNDARY_AT, 0) == trace["initial_boundary"]
+    assert page.evaluate(BOUNDARY_AT, trace["inflated_at"]) == data["layers"]["boundary"]
+    assert page.evaluate(BOUNDARY_AT, len(trace["steps"])) == data["layers"]["result"]
     page.mouse.move(5, 5)  # off the canvas: no point is highlighted
     view.settle()
     assert (view.canvas() == with_dt).all(), "step 0 looks different after the replay"

@@ -3,30 +3,55 @@
 //! `main` only parses the arguments, runs the command and maps errors to exit statuses:
 //! 0 for success, 1 for an error (one line `sigdt: <message>` on stderr), 2 for a usage
 //! error (reported by clap).
+//!
+//! Each subcommand has a file of its own in [`cmd`], holding its arguments beside the code
+//! that runs it. The commands share [`input`] (reading points and ground truth),
+//! [`messages`] (stderr), [`methods`] (the `--method` parser), [`labelled`] (labelled
+//! samples and their files), [`output`] and [`format`](mod@format); none of those imports a command.
 
-mod args;
-mod args_bench;
-mod args_generate;
-mod args_view;
 mod bench;
+mod cli;
+mod cmd;
 mod format;
-mod generate;
+mod input;
+mod labelled;
+mod messages;
+mod methods;
 mod output;
-mod picture;
 mod png;
-mod run;
-mod sweep;
 mod view;
 
 use std::process::ExitCode;
 
+use clap::{CommandFactory, Parser};
+
+use crate::cli::{Cli, Command};
+use crate::input::Input;
+use crate::messages::UsageError;
+
 fn main() -> ExitCode {
-    let cli = args::parse();
-    match run::run(cli) {
+    let cli = Cli::parse();
+    let input = Input::new(cli.max_points);
+    let result = match cli.command {
+        Command::Reconstruct(args) => cmd::reconstruct::run(&args, &input),
+        Command::Graph(args) => cmd::graph::run(&args, &input),
+        Command::Bench(args) => cmd::bench::run(&args),
+        Command::Eval(args) => cmd::eval::run(&args, &input),
+        Command::Sample(args) => cmd::sample::run(&args),
+        Command::Perturb(args) => cmd::perturb::run(&args, &input),
+        Command::Sweep(args) => cmd::sweep::run(&args),
+        Command::Render(args) => cmd::render::run(&args, &input),
+        Command::View(args) => cmd::view::run(&args, &input),
+        Command::BenchWorker(args) => cmd::bench_worker::run(&args),
+    };
+    match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(err) => {
-            run::note(&format!("sigdt: {}", run::message(&err)));
-            ExitCode::FAILURE
-        }
+        Err(err) => match err.downcast_ref::<UsageError>() {
+            Some(usage) => usage.exit(Cli::command()),
+            None => {
+                messages::note(&format!("sigdt: {}", messages::one_line(&err)));
+                ExitCode::FAILURE
+            }
+        },
     }
 }

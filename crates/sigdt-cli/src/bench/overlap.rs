@@ -5,7 +5,6 @@ use std::path::Path;
 
 use sigdt_lab::eval::{self, Overlap};
 
-use super::dataset::case_files;
 use super::record::{Case, OverlapStat};
 
 /// The category the overlap statistics are averaged over, as in the paper.
@@ -15,7 +14,7 @@ const OVERLAP_CATEGORY: &str = "manifold";
 /// failure shows up when the methods run).
 pub fn fill_graph_epsilon(dir: &Path, cases: &mut [Case]) {
     for case in cases {
-        case.graph_epsilon = labelled(dir, &case.name)
+        case.graph_epsilon = labelled(dir, case)
             .and_then(|(points, gt)| eval::graph_epsilon(&points, &gt).ok())
             .filter(|e| e.is_finite());
     }
@@ -25,8 +24,8 @@ pub fn fill_graph_epsilon(dir: &Path, cases: &mut [Case]) {
 pub fn overlap_stats(dir: &Path, cases: &[Case]) -> Vec<OverlapStat> {
     let sets: Vec<Overlap> = cases
         .iter()
-        .filter(|c| c.category == OVERLAP_CATEGORY)
-        .filter_map(|c| labelled(dir, &c.name))
+        .filter(|c| c.row.category == OVERLAP_CATEGORY)
+        .filter_map(|c| labelled(dir, c))
         .filter_map(|(points, gt)| eval::overlap(&points, &gt).ok())
         .collect();
     if sets.is_empty() {
@@ -88,8 +87,8 @@ pub fn overlap_stats(dir: &Path, cases: &[Case]) -> Vec<OverlapStat> {
     ]
 }
 
-/// The points and ground truth of case `name`, if both can be read.
-fn labelled(dir: &Path, name: &str) -> Option<(Vec<sigdt::Point>, Vec<sigdt::Edge>)> {
-    let (points, gt, _) = case_files(dir, name);
-    Some((sigdt::io::read_points(&points).ok()?, sigdt::io::read_edges(&gt).ok()?))
+/// The points and ground truth of `case`, if both can be read (by the lab's reader, which
+/// also checks the ground truth against the points).
+fn labelled(dir: &Path, case: &Case) -> Option<(Vec<sigdt::Point>, Vec<sigdt::Edge>)> {
+    case.row.read(dir).ok()
 }

@@ -6,17 +6,14 @@
 //! running the methods again.
 use std::io::{self, Read, Write};
 
-/// One labelled point set of the data folder (a row of `index.csv`).
+use sigdt_lab::dataset;
+
+/// One labelled point set of the data folder: its row of `index.csv`, as the lab's
+/// [`dataset`] reader gives it, and what the benchmark computes about it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Case {
-    /// File stem: the points are `NAME.xy`, the ground truth `NAME.gt`.
-    pub name: String,
-    /// Category: manifold, sharp, open, multiple, noisy, outliers, bezier or large.
-    pub category: String,
-    /// Number of input points.
-    pub n_points: usize,
-    /// The sampling ε of the ground truth as given by the `epsilon` column of `index.csv`.
-    pub epsilon: Option<f64>,
+    /// Name, category, number of points and the `epsilon` column of `index.csv`.
+    pub row: dataset::Case,
     /// The sampling ε computed by this benchmark (graph lfs, variant E), if computed.
     pub graph_epsilon: Option<f64>,
 }
@@ -66,7 +63,7 @@ pub struct Entry {
     pub outcome: Outcome,
 }
 
-/// One proximity-graph overlap statistic (ALGORITHMS.md section 4.10).
+/// One proximity-graph overlap statistic (`docs/algorithms.md` §4.10).
 #[derive(Clone, Debug, PartialEq)]
 pub struct OverlapStat {
     /// The statistic, for example `recon in SIGDT`.
@@ -152,10 +149,10 @@ pub fn write_results_csv(data: &BenchData, mut w: impl Write) -> io::Result<()> 
             .get(entry.case)
             .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, "entry names no case"))?;
         let mut row = vec![
-            case.name.clone(),
-            case.category.clone(),
-            case.n_points.to_string(),
-            opt(case.epsilon),
+            case.row.name.clone(),
+            case.row.category.clone(),
+            case.row.n_points.to_string(),
+            opt(case.row.epsilon),
             opt(case.graph_epsilon),
             entry.method.clone(),
         ];
@@ -209,16 +206,16 @@ pub fn read_results_csv(mut r: impl Read) -> io::Result<BenchData> {
         if rec.len() != CSV_HEADER.len() {
             return Err(invalid(line, "wrong number of fields"));
         }
-        let case = match data.cases.iter().position(|c| c.name == rec[0]) {
+        let case = match data.cases.iter().position(|c| c.row.name == rec[0]) {
             Some(i) => i,
             None => {
-                data.cases.push(Case {
+                let row = dataset::Case {
                     name: rec[0].clone(),
                     category: rec[1].clone(),
                     n_points: num(&rec[2], line)?,
                     epsilon: opt_num(&rec[3], line)?,
-                    graph_epsilon: opt_num(&rec[4], line)?,
-                });
+                };
+                data.cases.push(Case { row, graph_epsilon: opt_num(&rec[4], line)? });
                 data.cases.len() - 1
             }
         };
@@ -323,11 +320,8 @@ mod tests {
 
     /// Two cases, two methods: a success, a failure with an awkward message, a time-out.
     fn sample() -> BenchData {
-        let case = |name: &str, category: &str, n, epsilon| Case {
-            name: name.into(),
-            category: category.into(),
-            n_points: n,
-            epsilon,
+        let case = |name: &str, category: &str, n_points, epsilon| Case {
+            row: dataset::Case { name: name.into(), category: category.into(), n_points, epsilon },
             graph_epsilon: None,
         };
         let run = Run {

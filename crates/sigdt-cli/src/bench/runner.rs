@@ -14,7 +14,8 @@ use std::time::{Duration, Instant};
 use anyhow::{Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use super::dataset::case_files;
+use sigdt_lab::dataset;
+
 use super::record::{Case, Entry, Outcome, Run};
 
 /// What to run: the methods by name and the worker's settings.
@@ -49,8 +50,9 @@ pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
             scope.spawn(|| loop {
                 let k = next.fetch_add(1, Ordering::Relaxed);
                 let Some(&(case, method)) = tasks.get(k) else { break };
-                bar.set_message(format!("{} {}", cases[case].name, method));
-                let outcome = run_one(&exe, plan, &cases[case].name, method);
+                let row = &cases[case].row;
+                bar.set_message(format!("{} {}", row.name, method));
+                let outcome = run_one(&exe, plan, row, method);
                 let entry = Entry { case, method: method.clone(), outcome };
                 results.lock().unwrap_or_else(|e| e.into_inner())[k] = Some(entry);
                 bar.inc(1);
@@ -63,12 +65,12 @@ pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
 }
 
 /// Runs one worker and turns whatever happened into an [`Outcome`].
-fn run_one(exe: &Path, plan: &Plan<'_>, name: &str, method: &str) -> Outcome {
-    let (points, gt, truth) = case_files(plan.dir, name);
+fn run_one(exe: &Path, plan: &Plan<'_>, case: &dataset::Case, method: &str) -> Outcome {
+    let files = case.files(plan.dir);
     let mut command = Command::new(exe);
     command.arg("bench-worker").arg("--method").arg(method);
-    command.arg("--repeat").arg(plan.repeat.to_string()).arg(&points).arg(&gt);
-    if let Some(truth) = &truth {
+    command.arg("--repeat").arg(plan.repeat.to_string()).arg(&files.points).arg(&files.gt);
+    if let Some(truth) = &files.truth {
         command.arg("--truth").arg(truth);
     }
     command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
@@ -127,8 +129,8 @@ pub fn import(label: &str, results: &Path, data: &Path, cases: &[Case]) -> Resul
     let times = read_times(&results.join("times.csv"))?;
     let mut entries = Vec::new();
     for (case, c) in cases.iter().enumerate() {
-        let edges_file = results.join(format!("{}.edges", c.name));
-        let outcome = match score_file(data, &c.name, &edges_file, &times) {
+        let edges_file = results.join(format!("{}.edges", c.row.name));
+        let outcome = match score_file(data, &c.row, &edges_file, &times) {
             Ok(run) => run,
             Err(e) => Outcome::Failed(format!("{e:#}")),
         };
@@ -137,21 +139,26 @@ pub fn import(label: &str, results: &Path, data: &Path, cases: &[Case]) -> Resul
     Ok(entries)
 }
 
-fn score_file(data: &Path, name: &str, edges: &Path, times: &[(String, f64)]) -> Result<Outcome> {
+fn score_file(
+    data: &Path,
+    case: &dataset::Case,
+    edges: &Path,
+    times: &[(String, f64)],
+) -> Result<Outcome> {
     if !edges.is_file() {
         return Ok(Outcome::Failed(format!("no result file {}", edges.display())));
     }
-    let (points, gt, truth) = case_files(data, name);
-    let pts = sigdt::io::read_points(&points)?;
-    let gt = sigdt::io::read_edges(&gt)?;
-    let clean = truth.as_deref().map(sigdt::io::read_points).transpose()?;
+    let files = case.files(data);
+    let pts = sigdt::io::read_points(&files.points)?;
+    let gt = sigdt::io::read_edges(&files.gt)?;
+    let clean = files.truth.as_deref().map(sigdt::io::read_points).transpose()?;
     let mut result = sigdt::io::read_edges(edges)?;
     result.sort_unstable();
     result.dedup();
     if let Some(&[_, j]) = result.iter().find(|&&[_, j]| j >= pts.len()) {
         anyhow::bail!("{}: index {j} is out of range ({} points)", edges.display(), pts.len());
     }
-    let time = times.iter().find(|(n, _)| n == name).map_or(f64::NAN, |t| t.1);
+    let time = times.iter().find(|(n, _)| *n == case.name).map_or(f64::NAN, |t| t.1);
     let run = super::worker::score(&pts, clean.as_deref(), &gt, &result, "imported", time)?;
     Ok(Outcome::Done(run))
 }

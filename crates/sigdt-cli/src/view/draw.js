@@ -17,7 +17,12 @@ const LAYERS = [
   { id: "current", label: "boundary (step)", color: "rgba(27, 31, 39, 0.85)", width: 3, on: [1, 0] },
 ];
 const DRAW_ORDER = ["interior", "gt", "dt", "sigdt2", "sigdt", "sig", "current", "boundary", "result", "points"];
-const STEP_COLORS = { i: "rgba(36, 170, 80, 0.75)", p: "rgba(0, 150, 170, 0.75)", s: "rgba(214, 39, 40, 0.7)" };
+// By phase name (the trace's `phases`).
+const STEP_COLORS = {
+  inflate: "rgba(36, 170, 80, 0.75)",
+  pocket: "rgba(0, 150, 170, 0.75)",
+  sculpt: "rgba(214, 39, 40, 0.7)",
+};
 const BACKGROUND = "#fbfbfa";
 
 const clamp = (x, lo, hi) => Math.min(Math.max(x, lo), hi);
@@ -279,7 +284,7 @@ View.prototype.drawInterior = function (style) {
     ctx.lineTo(sx[b], sy[b]);
     ctx.lineTo(sx[c], sy[c]);
     ctx.closePath();
-    ctx.fillStyle = STEP_COLORS[trace.stepKind[k]] || STEP_COLORS.i;
+    ctx.fillStyle = STEP_COLORS[trace.phaseName(k)] || STEP_COLORS.inflate;
     ctx.fill();
     ctx.lineWidth = 1.5;
     ctx.strokeStyle = "#1b1f27";
@@ -296,11 +301,12 @@ View.prototype.drawInterior = function (style) {
   }
 };
 
-/** The boundary at the current step, computed once per step. */
+/** The boundary at the current step and the cycles of its interior, once per step. */
 View.prototype.currentBoundary = function () {
   if (!this.stepEdges) {
-    const boundary = this.model.trace.boundary();
-    this.stepEdges = Object.assign(boundary, cycles(boundary.edges, boundary.sides, this.model.n));
+    const trace = this.model.trace;
+    const { loops, starts } = cycles(trace.sides(), this.model.n);
+    this.stepEdges = { edges: trace.boundary(), loops, starts };
   }
   return this.stepEdges;
 };

@@ -1,32 +1,42 @@
 //! `sigdt view`: one self-contained HTML page to explore a reconstruction.
 //!
 //! The page draws the points, the proximity graphs (DT, SIG circles, SIGDT, SIGDT2), the
-//! result and the ground truth on a canvas, with pan, zoom and layer toggles, and replays
-//! the inflating and sculpting steps one triangle at a time (the paper's Figures 4, 6, 7).
-//! Everything is inlined: the stylesheet, the scripts and the data, which sits in a
-//! `<script type="application/json">` element. The page loads nothing from the network and
-//! works from `file://`.
+//! boundary after inflating, the result and the ground truth on a canvas, with pan, zoom and
+//! layer toggles, and replays the inflating and sculpting steps one triangle at a time (the
+//! paper's Figures 4, 6, 7). Everything is inlined: the stylesheet, the scripts and the
+//! data, which sits in a `<script type="application/json">` element. The page loads nothing
+//! from the network and works from `file://`.
 //!
 //! [`view_json`] writes the data; [`viewer_html`] wraps it into the page. The format
-//! (edges are `[i, j]` point indices, triangles `[i, j, k]`):
+//! (edges are `[i, j]` point indices with `i < j`, triangles `[i, j, k]`):
 //!
 //! ```text
 //! {"title": "glyph_n_tilde (385 points)", "method": "sig-connect2d", "status": "polygon",
-//!  "points": [[x, y], ...], "nn": [r, ...],
-//!  "layers": {"dt": [[i, j], ...], "sigdt": [...], "sigdt2": [...], "result": [...], "gt": [...] | null},
-//!  "trace": null | {"triangles": [[i, j, k], ...], "initial_inside": [0 | 1, ...],
-//!                   "dangling": [[i, j], ...], "steps": [[t, 0 | 1, "i" | "p" | "s"], ...],
-//!                   "inflated_at": K}}
+//!  "points": [[x, y], ...], "nn": [r | null, ...],
+//!  "layers": {"dt": [[i, j], ...], "sigdt": [...], "sigdt2": [...], "boundary": [...],
+//!             "result": [...], "gt": [...] | null},
+//!  "trace": null | {"phases": ["inflate", "pocket", "sculpt"],
+//!                   "triangles": [[i, j, k], ...], "initial_inside": [0 | 1, ...],
+//!                   "initial_boundary": [[i, j], ...],
+//!                   "steps": [[t, phase, [[i, j], ...]], ...], "inflated_at": K}}
 //! ```
 //!
-//! The boundary at step `s` is replayed in the page (`model.js`): the labels after
-//! `steps[0..s]`, the triangle edges with different labels on their two sides (beyond the
-//! convex hull counts as exterior), and the dangling edges whose triangles are all exterior.
+//! `nn` is the SIG circle radius (`null` for a lone point); `boundary` (the boundary after
+//! inflating) is there only with a trace. The trace is replayed by the kernel
+//! ([`sigdt::Trace`]), never by the page: each step turns its triangle `t` to the other label
+//! and toggles the listed edges in or out of the boundary ([`Trace::boundary_changes`]),
+//! starting from `initial_boundary` ([`Trace::boundary_at`]`(0)`). Flipping and toggling are
+//! their own inverse, so the page steps back by applying the same step again. `phase` is
+//! [`Phase::code`], an index into `phases` ([`Phase::ALL`] by name). The page reads the labels
+//! only to fill the interior: it orients each boundary edge with its interior triangle on
+//! the left, and leaves out the dangling edges, which have none.
 //!
-//! The scripts are split by concern: `model.js` (data, replay), `draw.js` (camera, canvas),
-//! `ui.js` (legend, step controls, mouse, keyboard).
+//! The scripts are split by concern: `model.js` (data, applying steps), `draw.js` (camera,
+//! canvas), `ui.js` (legend, step controls, mouse, keyboard).
 
 use std::fmt::Write;
+
+use sigdt::{Phase, Trace};
 
 const TEMPLATE: &str = include_str!("viewer.html");
 const CSS: &str = include_str!("viewer.css");
@@ -45,30 +55,15 @@ pub struct ViewData<'a> {
     pub status: &'a str,
     /// The input points.
     pub points: &'a [[f64; 2]],
-    /// Nearest-neighbour distance per point (the SIG circle radius; 0 for duplicates).
+    /// Nearest-neighbour distance per point (the SIG circle radius; 0 for duplicates, `∞`
+    /// for a lone point).
     pub nn: &'a [f64],
-    /// Named edge layers, in the order `dt`, `sigdt`, `sigdt2`, `result`.
+    /// Named edge layers, in the order `dt`, `sigdt`, `sigdt2`, `boundary`, `result`.
     pub layers: Vec<(&'a str, &'a [[usize; 2]])>,
     /// The ground-truth edges, if known.
     pub gt: Option<&'a [[usize; 2]]>,
     /// The inflating and sculpting steps, for the methods that have them.
-    pub trace: Option<TraceData<'a>>,
-}
-
-/// The labelling of Delaunay triangles from the initial graph to the final polygon.
-#[derive(Debug, Clone)]
-pub struct TraceData<'a> {
-    /// The Delaunay triangles, counter-clockwise input-index triples.
-    pub triangles: &'a [[usize; 3]],
-    /// Whether each triangle starts interior.
-    pub initial_inside: &'a [bool],
-    /// Edges of the initial graph on no interior triangle.
-    pub dangling: &'a [[usize; 2]],
-    /// `(triangle, becomes interior, kind)`, with kind `'i'` inflate, `'p'` pocket or
-    /// `'s'` sculpt.
-    pub steps: &'a [(usize, bool, char)],
-    /// The number of steps before sculpting starts.
-    pub inflated_at: usize,
+    pub trace: Option<&'a Trace>,
 }
 
 /// The page for `data_json` (as written by [`view_json`]).
@@ -130,19 +125,25 @@ pub fn view_json(data: &ViewData) -> String {
     s
 }
 
-fn trace_json(s: &mut String, trace: &TraceData) {
-    s.push_str("{\"triangles\": ");
-    list(s, trace.triangles, |s, [i, j, k]| {
+/// The trace as the page replays it: the initial labels and boundary, and per step the
+/// triangle, the phase code and the edges it toggles.
+fn trace_json(s: &mut String, trace: &Trace) {
+    s.push_str("{\"phases\": ");
+    list(s, &Phase::ALL, |s, phase| string(s, phase.name()));
+    s.push_str(",\n\"triangles\": ");
+    list(s, &trace.triangles, |s, [i, j, k]| {
         let _ = write!(s, "[{i},{j},{k}]");
     });
     s.push_str(",\n\"initial_inside\": ");
-    list(s, trace.initial_inside, |s, &inside| s.push(if inside { '1' } else { '0' }));
-    s.push_str(",\n\"dangling\": ");
-    pairs(s, trace.dangling);
+    list(s, &trace.initial_inside, |s, &inside| s.push(if inside { '1' } else { '0' }));
+    s.push_str(",\n\"initial_boundary\": ");
+    pairs(s, &trace.boundary_at(0));
     s.push_str(",\n\"steps\": ");
-    list(s, trace.steps, |s, &(t, inside, kind)| {
-        let _ = write!(s, "[{t},{},", u8::from(inside));
-        string(s, kind.encode_utf8(&mut [0; 4]));
+    let changes = trace.boundary_changes();
+    let steps: Vec<_> = trace.steps.iter().zip(&changes).collect();
+    list(s, &steps, |s, (step, toggled)| {
+        let _ = write!(s, "[{},{},", step.triangle, step.phase.code());
+        pairs(s, toggled);
         s.push(']');
     });
     let _ = write!(s, ",\n\"inflated_at\": {}}}", trace.inflated_at);
@@ -195,14 +196,26 @@ fn string(s: &mut String, text: &str) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use sigdt::Step;
 
+    /// A square split into two triangles: the first starts interior; inflating takes the
+    /// second, sculpting then removes the first. `[0, 3]` starts dangling.
     fn square() -> String {
         let points = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1e-7]];
         let nn = [1.0, 1.0, 1.0, f64::INFINITY];
         let edges = [[0, 1], [0, 3], [1, 2], [2, 3]];
         let diagonal = [[0, 2]];
-        let triangles = [[0, 1, 2], [0, 2, 3]];
-        let steps = [(1, true, 'i'), (0, false, 's')];
+        let trace = Trace {
+            triangles: vec![[0, 1, 2], [0, 2, 3]],
+            graph: vec![[0, 1], [0, 3], [1, 2]],
+            initial_inside: vec![true, false],
+            dangling: vec![[0, 3]],
+            steps: vec![
+                Step { triangle: 1, inside: true, phase: Phase::Inflate },
+                Step { triangle: 0, inside: false, phase: Phase::Sculpt },
+            ],
+            inflated_at: 1,
+        };
         view_json(&ViewData {
             title: "a \"square\" </script><!-- \u{1}",
             method: "sig-connect2d",
@@ -211,13 +224,7 @@ mod tests {
             nn: &nn,
             layers: vec![("dt", &edges), ("result", &diagonal)],
             gt: None,
-            trace: Some(TraceData {
-                triangles: &triangles,
-                initial_inside: &[true, false],
-                dangling: &[[0, 3]],
-                steps: &steps,
-                inflated_at: 1,
-            }),
+            trace: Some(&trace),
         })
     }
 
@@ -230,8 +237,10 @@ mod tests {
              \"points\": [[0.0,0.0],[1.0,0.0],[1.0,1.0],[0.0,1e-7]],\n\
              \"nn\": [1.0,1.0,1.0,null],\n\
              \"layers\": {\"dt\": [[0,1],[0,3],[1,2],[2,3]],\n\"result\": [[0,2]],\n\"gt\": null},\n\
-             \"trace\": {\"triangles\": [[0,1,2],[0,2,3]],\n\"initial_inside\": [1,0],\n\
-             \"dangling\": [[0,3]],\n\"steps\": [[1,1,\"i\"],[0,0,\"s\"]],\n\"inflated_at\": 1}}\n"
+             \"trace\": {\"phases\": [\"inflate\",\"pocket\",\"sculpt\"],\n\
+             \"triangles\": [[0,1,2],[0,2,3]],\n\"initial_inside\": [1,0],\n\
+             \"initial_boundary\": [[0,1],[0,2],[0,3],[1,2]],\n\
+             \"steps\": [[1,0,[[0,2],[2,3]]],[0,2,[[0,1],[0,2],[1,2]]]],\n\"inflated_at\": 1}}\n"
         );
     }
 

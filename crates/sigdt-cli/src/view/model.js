@@ -1,11 +1,11 @@
-// model.js: the page's data in typed arrays, and the replay of inflating and sculpting.
+// model.js: the page's data in typed arrays, and the steps of inflating and sculpting.
 //
-// A trace labels Delaunay triangles interior (1) or exterior (0). Step k sets triangle
-// steps[k][0] to steps[k][1]; "step s" means steps[0..s] applied. The boundary at step s is
-// every triangle edge with different labels on its two sides (beyond the convex hull is
-// exterior), plus the initial dangling edges whose triangles are all still exterior.
-
-const KIND_NAMES = { i: "inflate", p: "pocket", s: "sculpt" };
+// A trace labels Delaunay triangles interior (1) or exterior (0); "step s" means the first
+// s steps applied. Which edges are on the boundary is decided in Rust alone (sigdt's
+// Trace::boundary_changes): the page gets the boundary before the first step, and for each
+// step the edges it toggles in or out. Applying step k flips the label of its triangle and
+// toggles those edges; doing it again undoes it, so stepping back applies the same step.
+// The labels only orient the boundary edges, to fill the interior through them (`sides`).
 
 /** Flat Uint32Array [i0, j0, i1, j1, ...] of an edge list, or null. */
 function flatEdges(edges, n) {
@@ -37,7 +37,6 @@ function Model(data) {
   const layers = data.layers || {};
   for (const name of Object.keys(layers)) this.edges[name] = flatEdges(layers[name], n);
   this.trace = data.trace ? new Trace(data.trace, n) : null;
-  if (this.trace) this.edges.boundary = this.trace.boundaryAt(this.trace.inflatedAt).edges;
 }
 
 /** [minX, minY, maxX, maxY] of the points (a unit box around the origin if there are none). */
@@ -60,65 +59,70 @@ function Trace(trace, n) {
     if (!(t[0] < n && t[1] < n && t[2] < n)) throw new Error(`triangle ${k} names a missing point`);
     this.tri.set(t, 3 * k);
   });
-  // across[3t + k]: the triangle across the edge from corner k to corner k + 1 of t, or -1.
-  this.across = new Int32Array(3 * T).fill(-1);
-  const seen = new Map();
+  this.labels = Uint8Array.from(trace.initial_inside, (v) => (v ? 1 : 0));
+  if (this.labels.length !== T) throw new Error("initial_inside must have one label per triangle");
+  this.phases = trace.phases;
+  // Every edge that is ever on the boundary gets an id; ends[2e], ends[2e + 1] are its points.
+  const ids = new Map();
   const key = (i, j) => (i < j ? i * n + j : j * n + i);
-  for (let h = 0; h < 3 * T; h++) {
-    const k = key(this.tri[h], this.tri[h % 3 === 2 ? h - 2 : h + 1]);
-    const other = seen.get(k);
-    if (other === undefined) {
-      seen.set(k, h);
-    } else {
-      this.across[h] = Math.floor(other / 3);
-      this.across[other] = Math.floor(h / 3);
+  const ends = [];
+  const id = ([i, j], where) => {
+    if (!(i < n && j < n)) throw new Error(`${where}: edge (${i}, ${j}) names a missing point`);
+    let e = ids.get(key(i, j));
+    if (e === undefined) {
+      e = ends.length / 2;
+      ids.set(key(i, j), e);
+      ends.push(i, j);
     }
-  }
-  this.initial = Uint8Array.from(trace.initial_inside, (v) => (v ? 1 : 0));
-  if (this.initial.length !== T) throw new Error("initial_inside must have one label per triangle");
-  this.labels = this.initial.slice();
-  this.dangling = flatEdges(trace.dangling, n);
-  // danglingAt[2d], danglingAt[2d + 1]: the (up to two) triangles on dangling edge d, or -1.
-  this.danglingAt = new Int32Array(this.dangling.length).fill(-1);
-  for (let d = 0; 2 * d < this.dangling.length; d++) {
-    const h = seen.get(key(this.dangling[2 * d], this.dangling[2 * d + 1]));
-    if (h !== undefined) {
-      this.danglingAt[2 * d] = Math.floor(h / 3);
-      this.danglingAt[2 * d + 1] = this.across[h];
-    }
-  }
+    return e;
+  };
+  const initial = trace.initial_boundary.map((edge) => id(edge, "initial_boundary"));
   const S = trace.steps.length;
   this.stepTriangle = new Uint32Array(S);
-  this.stepInside = new Uint8Array(S);
-  this.stepBefore = new Uint8Array(S); // the label the step replaced, to step back
-  this.stepKind = new Array(S);
-  this.ordinal = new Uint32Array(S); // 1-based position among the steps of its kind
-  this.totals = { i: 0, p: 0, s: 0 };
-  const labels = this.initial.slice();
-  trace.steps.forEach(([t, inside, kind], k) => {
+  this.stepPhase = new Uint8Array(S);
+  this.ordinal = new Uint32Array(S); // 1-based position among the steps of its phase
+  this.totals = this.phases.map(() => 0);
+  this.toggleStart = new Uint32Array(S + 1); // step k toggles toggles[toggleStart[k] ..]
+  const toggles = [];
+  trace.steps.forEach(([t, phase, edges], k) => {
     if (!(t < T)) throw new Error(`step ${k} names a missing triangle ${t}`);
+    if (!(phase < this.phases.length)) throw new Error(`step ${k} has an unknown phase ${phase}`);
     this.stepTriangle[k] = t;
-    this.stepInside[k] = inside ? 1 : 0;
-    this.stepBefore[k] = labels[t];
-    labels[t] = this.stepInside[k];
-    this.stepKind[k] = kind;
-    this.totals[kind] = (this.totals[kind] || 0) + 1;
-    this.ordinal[k] = this.totals[kind];
+    this.stepPhase[k] = phase;
+    this.ordinal[k] = ++this.totals[phase];
+    for (const edge of edges) toggles.push(id(edge, `step ${k}`));
+    this.toggleStart[k + 1] = toggles.length;
   });
+  this.toggles = Uint32Array.from(toggles);
+  this.ends = Uint32Array.from(ends);
+  const E = ends.length / 2;
+  this.on = new Uint8Array(E); // 1 for the edges on the boundary now
+  for (const e of initial) this.on[e] = 1;
+  // left[e], right[e]: the triangle with edge e's ends in counter-clockwise, clockwise order
+  // (-1: none), to fill the interior (see `sides`).
+  this.left = new Int32Array(E).fill(-1);
+  this.right = new Int32Array(E).fill(-1);
+  for (let h = 0; h < 3 * T; h++) {
+    const [i, j] = [this.tri[h], this.tri[h % 3 === 2 ? h - 2 : h + 1]];
+    const e = ids.get(key(i, j));
+    if (e !== undefined) (this.ends[2 * e] === i ? this.left : this.right)[e] = (h / 3) | 0;
+  }
   this.steps = S;
   this.inflatedAt = Math.min(Math.max(trace.inflated_at | 0, 0), S);
   this.current = 0;
 }
 
-/** Moves the labels to step s (0 ≤ s ≤ steps), applying or undoing the steps between. */
+/** Applies step k to the current state, or undoes it if it is the last one applied. */
+Trace.prototype.flip = function (k) {
+  this.labels[this.stepTriangle[k]] ^= 1;
+  for (let a = this.toggleStart[k]; a < this.toggleStart[k + 1]; a++) this.on[this.toggles[a]] ^= 1;
+};
+
+/** Moves to step s (0 ≤ s ≤ steps), applying or undoing the steps between. */
 Trace.prototype.seek = function (s) {
   s = Math.min(Math.max(s | 0, 0), this.steps);
-  for (; this.current < s; this.current++) {
-    this.labels[this.stepTriangle[this.current]] = this.stepInside[this.current];
-  }
-  for (; this.current > s; this.current--) {
-    this.labels[this.stepTriangle[this.current - 1]] = this.stepBefore[this.current - 1];
-  }
+  for (; this.current < s; this.current++) this.flip(this.current);
+  for (; this.current > s; this.current--) this.flip(this.current - 1);
 };
 
 /** The number of interior triangles at the current step. */
@@ -128,39 +132,44 @@ Trace.prototype.insideCount = function () {
   return inside;
 };
 
-/**
- * The boundary of the current labels: `edges`, a flat edge array, starts with `sides`
- * edges directed with the interior on their left (they form closed cycles), followed by
- * the dangling edges still on the boundary.
- */
+/** The boundary at the current step, as a flat edge array. */
 Trace.prototype.boundary = function () {
-  const out = [];
-  const { tri, across, labels } = this;
-  for (let h = 0; h < tri.length; h++) {
-    // Each boundary edge once: from its interior side, counter-clockwise.
-    const other = across[h];
-    if (labels[(h / 3) | 0] && (other < 0 || !labels[other])) {
-      out.push(tri[h], tri[h % 3 === 2 ? h - 2 : h + 1]);
-    }
+  let size = 0;
+  for (let e = 0; e < this.on.length; e++) size += this.on[e];
+  const out = new Uint32Array(2 * size);
+  for (let e = 0, k = 0; e < this.on.length; e++) {
+    if (!this.on[e]) continue;
+    out[k++] = this.ends[2 * e];
+    out[k++] = this.ends[2 * e + 1];
   }
-  const sides = out.length / 2;
-  for (let d = 0; 2 * d < this.dangling.length; d++) {
-    const a = this.danglingAt[2 * d];
-    const b = this.danglingAt[2 * d + 1];
-    if ((a < 0 || !labels[a]) && (b < 0 || !labels[b])) {
-      out.push(this.dangling[2 * d], this.dangling[2 * d + 1]);
-    }
-  }
-  return { edges: Uint32Array.from(out), sides };
+  return out;
 };
 
 /**
- * The directed sides edges[0 .. 2 * sides) split into closed cycles: cycle c visits
- * loops[starts[c] .. starts[c + 1]). The sides of a set of counter-clockwise triangles
- * have as many sides in as out at every vertex, so a walk can only end where it started,
- * and however they are split, the nonzero rule fills exactly the triangles.
+ * The boundary edges at the current step that have an interior triangle on one side, as a
+ * flat array directed with that triangle on their left: the outline the interior is filled
+ * through. Which edges are on the boundary is the trace's; this only orients them, and
+ * leaves out the dangling ones (exterior on both sides), which bound no area.
  */
-function cycles(edges, sides, n) {
+Trace.prototype.sides = function () {
+  const { on, ends, left, right, labels } = this;
+  const out = [];
+  for (let e = 0; e < on.length; e++) {
+    if (!on[e]) continue;
+    if (left[e] >= 0 && labels[left[e]]) out.push(ends[2 * e], ends[2 * e + 1]);
+    else if (right[e] >= 0 && labels[right[e]]) out.push(ends[2 * e + 1], ends[2 * e]);
+  }
+  return Uint32Array.from(out);
+};
+
+/**
+ * Directed sides split into closed cycles: cycle c visits loops[starts[c] .. starts[c + 1]).
+ * The sides of a set of counter-clockwise triangles have as many sides in as out at every
+ * vertex, so a walk can only end where it started, and however they are split, the nonzero
+ * rule fills exactly the triangles.
+ */
+function cycles(edges, n) {
+  const sides = edges.length / 2;
   const first = new Int32Array(n + 1); // sides out of v: at[first[v] .. first[v + 1])
   for (let k = 0; k < sides; k++) first[edges[2 * k] + 1]++;
   for (let v = 0; v < n; v++) first[v + 1] += first[v];
@@ -187,17 +196,17 @@ function cycles(edges, sides, n) {
   return { loops, starts };
 }
 
-/** The boundary at step s (the labels are left at step s). */
-Trace.prototype.boundaryAt = function (s) {
-  this.seek(s);
-  return this.boundary();
+/** The name of the phase of step k ("inflate", "pocket", "sculpt"). */
+Trace.prototype.phaseName = function (k) {
+  return this.phases[this.stepPhase[k]];
 };
 
 /** What step s shows: "initial", "inflate 3/12", "pocket", "sculpt 2/5" or "final". */
 Trace.prototype.label = function (s) {
   if (s >= this.steps) return "final";
   if (s <= 0) return "initial";
-  const kind = this.stepKind[s - 1];
-  if (kind === "p") return "pocket";
-  return `${KIND_NAMES[kind] || kind} ${this.ordinal[s - 1]}/${this.totals[kind]}`;
+  const name = this.phaseName(s - 1);
+  // A pocket fills several triangles at once: counting them one by one says nothing.
+  if (name === "pocket") return name;
+  return `${name} ${this.ordinal[s - 1]}/${this.totals[this.stepPhase[s - 1]]}`;
 };

@@ -6,15 +6,15 @@ const short = (x) => String(Number(x.toPrecision(6)));
 
 /** Legend rows with checkboxes (ids as in LAYERS); a layer without data is disabled. */
 function buildLayers(model, view) {
-  for (const el of document.querySelectorAll("[data-kind]")) {
-    el.style.setProperty("--c", STEP_COLORS[el.dataset.kind]);
+  for (const el of document.querySelectorAll("[data-phase]")) {
+    el.style.setProperty("--c", STEP_COLORS[el.dataset.phase]);
   }
   const list = $("layers");
   const trace = model.trace;
   const sizes = {
     points: model.n,
     sig: model.n,
-    interior: trace ? trace.initial.length : null,
+    interior: trace ? trace.labels.length : null,
     current: trace ? trace.steps : null,
   };
   for (const layer of LAYERS) {
@@ -67,8 +67,8 @@ function Stepper(model, view) {
   const N = trace.steps;
   this.slider.max = N;
   this.rate = Math.max(4, N / 12); // steps per second when playing: about 12 s in all
-  $("steps-summary").textContent =
-    `${count(trace.totals.i)} inflate · ${count(trace.totals.p)} pocket · ${count(trace.totals.s)} sculpt`;
+  const totals = trace.phases.map((name, p) => `${count(trace.totals[p])} ${name}`);
+  $("steps-summary").textContent = totals.join(" · ");
   this.phases(trace);
   this.slider.addEventListener("input", () => this.go(Number(this.slider.value), true));
   $("back").addEventListener("click", () => this.go(view.step - 1));
@@ -76,15 +76,15 @@ function Stepper(model, view) {
   $("play").addEventListener("click", () => this.toggle());
 }
 
-/** Colours the bar under the slider by the kind of each step; marks the inflated state. */
+/** Colours the bar under the slider by the phase of each step; marks the inflated state. */
 Stepper.prototype.phases = function (trace) {
   const N = trace.steps;
   const stops = [];
   let k = 0;
   while (k < N) {
     let end = k;
-    while (end < N && trace.stepKind[end] === trace.stepKind[k]) end++;
-    const color = STEP_COLORS[trace.stepKind[k]] || "#999";
+    while (end < N && trace.stepPhase[end] === trace.stepPhase[k]) end++;
+    const color = STEP_COLORS[trace.phaseName(k)] || "#999";
     stops.push(`${color} ${((100 * k) / N).toFixed(3)}%`, `${color} ${((100 * end) / N).toFixed(3)}%`);
     k = end;
   }
@@ -106,7 +106,7 @@ Stepper.prototype.go = function (s, fromSlider) {
   if (s > 0) {
     const k = s - 1;
     const t = trace.stepTriangle[k];
-    info += ` · triangle ${t} → ${trace.stepInside[k] ? "interior" : "exterior"}`;
+    info += ` · triangle ${t} → ${trace.labels[t] ? "interior" : "exterior"}`;
   }
   if (s === trace.inflatedAt) info += " · inflated";
   $("stepinfo").textContent = info;

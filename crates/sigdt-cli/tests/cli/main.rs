@@ -174,12 +174,12 @@ fn assert_no_temporary_files(dir: &Path) {
     assert!(!names.iter().any(|n| n.ends_with(".tmp")), "temporary file left behind: {names:?}");
 }
 
-/// The shared labelled curves, next to the repository (`shared/data/curves`).
-fn shared_curves() -> PathBuf {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data/curves");
+/// The labelled curves of the repository (`data/curves`, beside `data/inputs`).
+fn labelled_curves() -> PathBuf {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/curves");
     assert!(
         dir.is_dir(),
-        "shared test data missing: expected {} (shared/ beside the repository)",
+        "test data missing: expected {} (data/curves of the repository)",
         dir.display()
     );
     dir

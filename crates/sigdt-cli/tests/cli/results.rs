@@ -1,4 +1,4 @@
-//! Outputs: every format, the graphs, degenerate input, help texts and a shared curve.
+//! Outputs: every format, the graphs, degenerate input, help texts and a labelled curve.
 
 use super::*;
 
@@ -212,8 +212,8 @@ fn help_and_version() {
 }
 
 #[test]
-fn shared_bezier_curve_matches_ground_truth() {
-    let dir = shared_curves();
+fn labelled_bezier_curve_matches_ground_truth() {
+    let dir = labelled_curves();
     let name = "bezier0_eps0.1_off00";
     let input = dir.join(format!("{name}.xy"));
     let expected = fs::read_to_string(dir.join(format!("{name}.gt")))

@@ -24,7 +24,7 @@ pub(super) fn accuracy_eps(s: &Summary) -> Option<String> {
     let mut by_eps: Vec<(f64, usize)> = s
         .in_category("manifold")
         .into_iter()
-        .filter_map(|i| Some((cases[i].epsilon.filter(|e| e.is_finite())?, i)))
+        .filter_map(|i| Some((cases[i].row.epsilon.filter(|e| e.is_finite())?, i)))
         .collect();
     if by_eps.is_empty() {
         return None;
@@ -60,7 +60,7 @@ pub(super) fn runtime(s: &Summary) -> String {
         .iter()
         .map(|m| {
             let points = (0..s.data.cases.len())
-                .filter_map(|i| Some((s.data.cases[i].n_points as f64, s.run(i, m)?.time_ms)))
+                .filter_map(|i| Some((s.data.cases[i].row.n_points as f64, s.run(i, m)?.time_ms)))
                 .collect();
             (m.clone(), points)
         })

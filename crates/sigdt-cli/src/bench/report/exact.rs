@@ -2,7 +2,7 @@
 use super::summary::{bold_best, inline, mean, ms, table, Summary};
 use crate::bench::record::Outcome;
 
-/// The paper's Table 2 ([MOW22]; ALGORITHMS.md 5.1): algorithm; exact rate in % on manifold,
+/// The paper's Table 2 (\[MOW22\]; `docs/algorithms.md` §5.1): algorithm; exact rate in % on manifold,
 /// sharp, open, multiple and manifold ε < 1; mean manifold runtime and large-set runtime in
 /// ms (`None`: no output on the large set).
 const PAPER_TABLE_2: [(&str, [f64; 5], f64, Option<f64>); 16] = [
@@ -68,7 +68,7 @@ pub(super) fn exact_section(s: &Summary) -> String {
     header.push("manifold mean ms".into());
     if let Some(i) = largest {
         let case = &s.data.cases[i];
-        header.push(format!("`{}` (n = {}) ms", inline(&case.name), case.n_points));
+        header.push(format!("`{}` (n = {}) ms", inline(&case.row.name), case.row.n_points));
     }
     header.push("failed / timed out".into());
 

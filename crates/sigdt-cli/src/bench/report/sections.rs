@@ -52,7 +52,7 @@ pub(super) fn distance_section(s: &Summary) -> String {
     out
 }
 
-/// The "Proximity graphs" table of the overlap statistics (ALGORITHMS.md 4.10).
+/// The "Proximity graphs" table of the overlap statistics (`docs/algorithms.md` §4.10).
 pub(super) fn overlap_section(overlap: &[OverlapStat]) -> String {
     let mut out = String::from("## Proximity graphs\n\n");
     if overlap.is_empty() {
@@ -89,11 +89,11 @@ pub(super) fn failures_section(s: &Summary) -> String {
                 _ => continue,
             };
             any = true;
-            let name = inline(&case.name);
+            let name = inline(&case.row.name);
             out += &format!(
                 "- `{name}` ({}, n = {}): {what}\n",
-                inline(&case.category),
-                case.n_points
+                inline(&case.row.category),
+                case.row.n_points
             );
         }
         out += if any { "\n" } else { "None.\n\n" };
@@ -106,7 +106,7 @@ pub(super) fn failures_section(s: &Summary) -> String {
             let missed: Vec<String> = all
                 .iter()
                 .filter(|&&i| !s.run(i, m).is_some_and(|r| r.exact))
-                .map(|&i| format!("`{}`", inline(&cases[i].name)))
+                .map(|&i| format!("`{}`", inline(&cases[i].row.name)))
                 .collect();
             if !missed.is_empty() {
                 out += &format!(

@@ -33,7 +33,8 @@ impl<'a> Summary<'a> {
 
     /// The categories present: the paper's order first, then any others alphabetically.
     pub fn categories(&self) -> Vec<String> {
-        let mut present: Vec<&str> = self.data.cases.iter().map(|c| c.category.as_str()).collect();
+        let mut present: Vec<&str> =
+            self.data.cases.iter().map(|c| c.row.category.as_str()).collect();
         present.sort_by_key(|c| (CATEGORY_ORDER.iter().position(|o| o == c), *c));
         present.dedup();
         let (mut known, others): (Vec<&str>, Vec<&str>) =
@@ -44,7 +45,9 @@ impl<'a> Summary<'a> {
 
     /// The indices of the cases of `category`.
     pub fn in_category(&self, category: &str) -> Vec<usize> {
-        (0..self.data.cases.len()).filter(|&i| self.data.cases[i].category == category).collect()
+        (0..self.data.cases.len())
+            .filter(|&i| self.data.cases[i].row.category == category)
+            .collect()
     }
 
     /// The manifold cases with `epsilon` below the threshold (`ours` picks `graph_epsilon`);
@@ -56,7 +59,7 @@ impl<'a> Summary<'a> {
             if ours {
                 case.graph_epsilon
             } else {
-                case.epsilon
+                case.row.epsilon
             }
         };
         manifold.iter().any(|&i| eps(i).is_some()).then(|| {
@@ -66,7 +69,7 @@ impl<'a> Summary<'a> {
     }
 
     /// How many of `cases` `method` reconstructed exactly; failures and missing runs count
-    /// as not exact (ALGORITHMS.md 4.2).
+    /// as not exact (`docs/algorithms.md` §4.2).
     pub fn rate(&self, method: &str, cases: &[usize]) -> Rate {
         let exact = cases.iter().filter(|&&i| self.run(i, method).is_some_and(|r| r.exact)).count();
         Rate { exact, total: cases.len() }
@@ -75,7 +78,7 @@ impl<'a> Summary<'a> {
     /// The index of the largest case (most points, first on ties).
     pub fn largest(&self) -> Option<usize> {
         let cases = &self.data.cases;
-        (0..cases.len()).rev().max_by_key(|&i| cases[i].n_points)
+        (0..cases.len()).rev().max_by_key(|&i| cases[i].row.n_points)
     }
 }
 

@@ -2,10 +2,12 @@
 use super::write_report;
 use crate::bench::chart::assert_well_formed;
 use crate::bench::record::{read_results_csv, BenchData, Case, Entry, Outcome, OverlapStat, Run};
+use sigdt_lab::dataset;
 use std::fs;
 
 fn case(name: &str, category: &str, n_points: usize, epsilon: Option<f64>) -> Case {
-    Case { name: name.into(), category: category.into(), n_points, epsilon, graph_epsilon: None }
+    let row = dataset::Case { name: name.into(), category: category.into(), n_points, epsilon };
+    Case { row, graph_epsilon: None }
 }
 
 fn done(exact: bool, time_ms: f64, rmse: Option<f64>) -> Outcome {

@@ -70,7 +70,7 @@ fn header(s: &Summary) -> String {
         .into_iter()
         .map(|category| {
             let n: Vec<usize> =
-                s.in_category(&category).iter().map(|&i| data.cases[i].n_points).collect();
+                s.in_category(&category).iter().map(|&i| data.cases[i].row.n_points).collect();
             let (lo, hi) = (n.iter().min().unwrap_or(&0), n.iter().max().unwrap_or(&0));
             vec![inline(&category), n.len().to_string(), format!("{lo}–{hi}")]
         })

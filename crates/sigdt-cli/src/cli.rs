@@ -1,20 +1,22 @@
-//! Command-line arguments: clap definitions and the help texts.
+//! The command line: the subcommands, the global flags and the help texts they share.
 //!
-//! Everything clap can check is checked here, so that a bad flag or value is a usage error
-//! (exit status 2) reported before any file is touched.
+//! Everything clap can check is checked here or in the subcommands' argument structs (one
+//! per file of [`cmd`](crate::cmd)), so that a bad flag or value is a usage error (exit status
+//! 2) reported before any file is touched.
 
-use std::path::PathBuf;
+use clap::builder::RangedU64ValueParser;
+use clap::{Parser, Subcommand};
 
-use crate::format::OutputFormat;
-use clap::builder::{PossibleValuesParser, RangedU64ValueParser, TypedValueParser};
-use clap::error::ErrorKind;
-use clap::{Args, CommandFactory, Parser, Subcommand};
-use sigdt::Method;
-
-use crate::args_bench::method_parser;
-pub use crate::args_bench::{BenchArgs, EvalArgs, WorkerArgs};
-pub use crate::args_generate::{PerturbArgs, SampleArgs, SweepArgs};
-pub use crate::args_view::{RenderArgs, ViewArgs};
+use crate::cmd::bench::BenchArgs;
+use crate::cmd::bench_worker::WorkerArgs;
+use crate::cmd::eval::EvalArgs;
+use crate::cmd::graph::GraphArgs;
+use crate::cmd::perturb::PerturbArgs;
+use crate::cmd::reconstruct::ReconstructArgs;
+use crate::cmd::render::RenderArgs;
+use crate::cmd::sample::SampleArgs;
+use crate::cmd::sweep::SweepArgs;
+use crate::cmd::view::ViewArgs;
 
 /// The input formats, shown in `sigdt --help` and `sigdt <command> --help`.
 const INPUT_FORMATS: &str = "\
@@ -81,7 +83,7 @@ pub struct Cli {
 }
 
 /// Default of `--max-points`: 10^8 points (1.6 GB of coordinates).
-pub const DEFAULT_MAX_POINTS: usize = 100_000_000;
+const DEFAULT_MAX_POINTS: usize = 100_000_000;
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
@@ -118,78 +120,10 @@ pub enum Command {
     BenchWorker(WorkerArgs),
 }
 
-/// `sigdt reconstruct`.
-#[derive(Debug, Args)]
-pub struct ReconstructArgs {
-    /// Point file, or '-' for standard input.
-    #[arg(value_name = "INPUT")]
-    pub input: PathBuf,
-    /// Write the result to OUT instead of standard output ('-' is standard output).
-    #[arg(short, long = "output", value_name = "OUT")]
-    pub output: Option<PathBuf>,
-    /// Output format [default: from OUT's extension, else edges].
-    #[arg(long, value_name = "FORMAT", value_parser = format_parser())]
-    pub format: Option<OutputFormat>,
-    /// Reconstruction method.
-    #[arg(long, value_name = "METHOD", value_parser = method_parser(),
-          default_value_t = Method::default())]
-    pub method: Method,
-    /// Do not give SIGDT leaves their shortest missing Delaunay edge before inflating
-    /// (leaf elimination, SIGDT2, is on by default).
-    #[arg(long)]
-    pub no_leaf_elimination: bool,
-    /// Print a summary (counts, status, time, per-stage statistics) to stderr.
-    #[arg(short, long)]
-    pub verbose: bool,
-}
-
-/// `sigdt graph`.
-#[derive(Debug, Args)]
-pub struct GraphArgs {
-    /// Point file, or '-' for standard input.
-    #[arg(value_name = "INPUT")]
-    pub input: PathBuf,
-    /// The graph: Delaunay triangulation, spheres-of-influence graph, SIGDT, SIGDT with
-    /// leaf elimination, Euclidean minimum spanning tree, or k nearest neighbours.
-    #[arg(long, value_name = "KIND",
-          value_parser = ["dt", "sig", "sigdt", "sigdt2", "emst", "knn"])]
-    pub kind: String,
-    /// Number of neighbours for --kind knn (required there, and only allowed there).
-    #[arg(short = 'k', value_name = "K", required_if_eq("kind", "knn"),
-          value_parser = RangedU64ValueParser::<usize>::new().range(1..))]
-    pub k: Option<usize>,
-    /// Write the edges to OUT instead of standard output ('-' is standard output).
-    #[arg(short, long = "output", value_name = "OUT")]
-    pub output: Option<PathBuf>,
-}
-
-/// Parses the command line; on a usage error prints it and exits with status 2, and on
-/// `--help` or `--version` prints the text and exits with status 0.
-pub fn parse() -> Cli {
-    let cli = Cli::parse();
-    if let Command::Graph(g) = &cli.command {
-        if g.k.is_some() && g.kind != "knn" {
-            let message = format!("-k is only used with --kind knn, not --kind {}", g.kind);
-            let mut cli = Cli::command();
-            cli.build();
-            match cli.find_subcommand_mut("graph") {
-                Some(graph) => graph.error(ErrorKind::ArgumentConflict, message).exit(),
-                None => cli.error(ErrorKind::ArgumentConflict, message).exit(),
-            }
-        }
-    }
-    cli
-}
-
-/// `--format` values, listed in the help and checked by clap.
-fn format_parser() -> impl TypedValueParser<Value = OutputFormat> {
-    let names = OutputFormat::ALL.iter().map(|f| f.name());
-    PossibleValuesParser::new(names).try_map(|s| s.parse::<OutputFormat>())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use clap::CommandFactory;
 
     #[test]
     fn definitions_are_consistent() {

@@ -1,4 +1,7 @@
-//! `sigdt sample` and `sigdt perturb`: point sets for the paper's experiments.
+//! Labelled samples: points with their ground truth (and clean positions when noisy), how
+//! `sample` and `sweep` make them from SVG paths, and how they are written as files.
+//!
+//! Shared by the generating commands; it imports no command.
 
 use std::path::{Path, PathBuf};
 
@@ -7,7 +10,6 @@ use sigdt::samplers::{self, Sample};
 use sigdt::{Edge, Point};
 use sigdt_lab::curves::{self, BezierPath};
 
-use crate::args_generate::{PerturbArgs, SampleArgs};
 use crate::output::Output;
 
 /// A labelled sample: points, ground truth, and the clean positions when noise was added.
@@ -18,28 +20,6 @@ pub struct Labelled {
     pub gt: Vec<Edge>,
     /// Clean positions, same indices, if `points` are noisy.
     pub truth: Option<Vec<Point>>,
-}
-
-/// `sigdt sample`.
-pub fn sample(args: &SampleArgs) -> Result<()> {
-    let paths = curves::read_svg_paths(&args.svg)?;
-    let path = pick(&paths, args.path, &args.svg)?;
-    let labelled =
-        eps_sample(path, args.eps, args.offset, args.lfs_noise, args.seed, !args.ordered)?;
-    write_labelled(&args.output, &labelled, &args.svg)
-}
-
-/// `sigdt perturb`.
-pub fn perturb(args: &PerturbArgs) -> Result<()> {
-    let output = Output::new(args.output.as_deref(), &args.input)?;
-    let mut points = crate::run::read_input(&args.input)?;
-    if let Some(s) = args.noise {
-        points = samplers::uniform_noise(&points, s, args.seed)?;
-    }
-    if let Some(q) = args.outliers {
-        points = samplers::add_outliers(&points, q, args.seed.wrapping_add(1))?;
-    }
-    output.write(|w| w.write_all(points_text(&points).as_bytes()))
 }
 
 /// Path `k` of `paths`, read from `file`.

@@ -1,10 +1,16 @@
-//! Arguments of the evaluation commands: `bench`, its hidden worker, and `eval`.
+//! `sigdt bench`: every method on every case of a labelled folder, written up as a report.
+//! The machinery is in [`bench`](crate::bench); this file checks the arguments and says
+//! what was done.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
 
-use clap::builder::{PossibleValuesParser, RangedU64ValueParser, TypedValueParser};
+use anyhow::{bail, Context, Result};
+use clap::builder::RangedU64ValueParser;
 use clap::Args;
-use sigdt::Method;
+
+use crate::bench::{cases, report, runner, suite};
+use crate::messages::note;
 
 /// `sigdt bench`.
 #[derive(Debug, Args)]
@@ -43,64 +49,48 @@ pub struct BenchArgs {
     pub imports: Vec<(String, PathBuf)>,
 }
 
-/// `sigdt bench-worker` (internal): one method on one case, one result line on stdout.
-#[derive(Debug, Args)]
-pub struct WorkerArgs {
-    /// Point file.
-    pub points: PathBuf,
-    /// Ground-truth edge file.
-    pub gt: PathBuf,
-    /// Clean positions of the points, to measure distances against.
-    #[arg(long)]
-    pub truth: Option<PathBuf>,
-    /// Method.
-    #[arg(long, value_parser = method_parser())]
-    pub method: Method,
-    /// Timed runs after the warm-up.
-    #[arg(long, default_value_t = 5)]
-    pub repeat: usize,
-}
-
-/// `sigdt eval`.
-#[derive(Debug, Args)]
-pub struct EvalArgs {
-    /// Point file, or '-' for standard input.
-    #[arg(value_name = "INPUT")]
-    pub input: PathBuf,
-    /// Ground-truth edges ('i j' per line, indices into INPUT).
-    #[arg(long, value_name = "FILE")]
-    pub gt: PathBuf,
-    /// Score this edge file instead of running a method.
-    #[arg(long, value_name = "FILE", conflicts_with = "method")]
-    pub edges: Option<PathBuf>,
-    /// Method to run and score.
-    #[arg(long, value_name = "METHOD", value_parser = method_parser(),
-          default_value_t = Method::default())]
-    pub method: Method,
-}
-
-/// `--method` values, listed in the help and checked by clap.
-pub fn method_parser() -> impl TypedValueParser<Value = Method> {
-    let names = Method::ALL.iter().map(|m| m.name());
-    PossibleValuesParser::new(names).try_map(|s| s.parse::<Method>())
-}
-
-/// Parses the methods of `sigdt bench --method`: a comma-separated list or `all`.
-pub fn methods(list: &str) -> Result<Vec<Method>, sigdt::Error> {
-    if list.trim() == "all" {
-        return Ok(Method::ALL.to_vec());
+/// `sigdt bench`.
+pub fn run(args: &BenchArgs) -> Result<()> {
+    let methods = crate::methods::names(&args.method)?;
+    let cases = cases::select(&args.dir, &args.categories, args.names.as_deref())?;
+    if cases.is_empty() {
+        bail!("{}: no case matches", args.dir.join("index.csv").display());
     }
-    let mut methods = Vec::new();
-    for name in list.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-        let method: Method = name.parse()?;
-        if !methods.contains(&method) {
-            methods.push(method);
+    for (k, (label, _)) in args.imports.iter().enumerate() {
+        if methods.contains(label) || args.imports[..k].iter().any(|(l, _)| l == label) {
+            bail!("--import {label}=...: '{label}' already names a method or another import");
         }
     }
-    if methods.is_empty() {
-        return Err(sigdt::Error::InvalidOption("--method lists no method".into()));
+    if same_folder(&args.out, &args.dir) {
+        bail!("{}: --out is the data folder; choose another folder", args.out.display());
     }
-    Ok(methods)
+    std::fs::create_dir_all(&args.out)
+        .with_context(|| format!("{}: cannot create the output folder", args.out.display()))?;
+    note(&format!(
+        "sigdt bench: {} cases x {} methods in {}",
+        cases.len(),
+        methods.len() + args.imports.len(),
+        args.dir.display()
+    ));
+    let plan = runner::Plan {
+        dir: &args.dir,
+        methods: &methods,
+        time_limit: Duration::from_secs_f64(args.time_limit),
+        repeat: args.repeat,
+        jobs: args.jobs,
+    };
+    let data = suite::run(&plan, args.time_limit, &args.imports, cases)?;
+    let files = report::write_report(&data, &args.out)
+        .with_context(|| format!("{}: cannot write the report", args.out.display()))?;
+    for file in files {
+        note(&format!("wrote {}", file.display()));
+    }
+    Ok(())
+}
+
+/// Whether `a` and `b` are the same existing folder.
+fn same_folder(a: &Path, b: &Path) -> bool {
+    matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b)
 }
 
 fn positive_seconds(text: &str) -> Result<f64, String> {

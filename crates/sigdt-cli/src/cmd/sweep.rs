@@ -7,24 +7,80 @@
 //! the `bench` machinery, so a crash or time-out is recorded like any other result.
 
 use std::fmt::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use anyhow::{bail, Context, Result};
-use sigdt_lab::curves;
+use clap::builder::RangedU64ValueParser;
+use clap::{Args, ValueEnum};
+use sigdt_lab::{curves, dataset};
 
-use crate::args_bench::methods;
-use crate::args_generate::{SweepArgs, SweepKind};
 use crate::bench::record::{Case, Outcome};
-use crate::bench::{chart, dataset, runner};
-use crate::generate::{eps_sample, pick, write_labelled, Labelled};
+use crate::bench::{cases, chart, runner};
+use crate::labelled::{eps_sample, pick, write_labelled, Labelled};
+use crate::messages::note;
+
+/// What `sigdt sweep` varies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SweepKind {
+    /// Uniform noise (fraction of the bounding-box diagonal) on labelled cases (paper
+    /// Fig. 16).
+    Noise,
+    /// Outlier share on labelled cases (paper Fig. 18).
+    Outliers,
+    /// lfs noise on eps-samples of an SVG path (paper Fig. 17).
+    LfsNoise,
+    /// eps of eps-samples of an SVG path, 20 start offsets each (paper Fig. 14).
+    Eps,
+}
+
+/// `sigdt sweep`.
+#[derive(Debug, Args)]
+pub struct SweepArgs {
+    /// What to vary.
+    #[arg(value_enum, value_name = "KIND")]
+    pub kind: SweepKind,
+    /// A labelled folder (noise, outliers) or an SVG file (lfs-noise, eps).
+    #[arg(value_name = "SOURCE")]
+    pub source: PathBuf,
+    /// Levels, comma-separated [default: noise 0.0001,0.0003,0.001,0.003,0.01;
+    /// outliers 0.01,0.02,0.05,0.1,0.2; lfs-noise 0.05,0.1,0.2,0.3,0.4,0.5;
+    /// eps 0.1,0.2,0.3,0.4,0.5].
+    #[arg(long, value_name = "L1,L2,...", value_delimiter = ',')]
+    pub levels: Vec<f64>,
+    /// Methods, comma-separated, or 'all'.
+    #[arg(long, value_name = "M1,M2,...|all", default_value = "all")]
+    pub method: String,
+    /// Folder for the generated sets, sweep.csv and rmse.svg.
+    #[arg(long, value_name = "DIR", default_value = "sweep")]
+    pub out: PathBuf,
+    /// Labelled cases to perturb: these categories (noise, outliers).
+    #[arg(long, value_name = "C1,C2,...", value_delimiter = ',', default_value = "manifold")]
+    pub categories: Vec<String>,
+    /// Only the first N cases of those categories (noise, outliers).
+    #[arg(long, value_name = "N")]
+    pub limit: Option<usize>,
+    /// eps of the samples for lfs-noise.
+    #[arg(long, value_name = "EPS", default_value_t = 0.2)]
+    pub eps: f64,
+    /// Which SVG path (lfs-noise, eps).
+    #[arg(long, value_name = "K", default_value_t = 0)]
+    pub path: usize,
+    /// Pairs run at once.
+    #[arg(short, long, value_name = "N", default_value_t = 1,
+          value_parser = RangedU64ValueParser::<usize>::new().range(1..=256))]
+    pub jobs: usize,
+    /// Wall-clock limit per (set, method), in seconds.
+    #[arg(long, value_name = "SECONDS", default_value_t = 60.0)]
+    pub time_limit: f64,
+}
 
 /// Start offsets per eps-sampled set: k / 20, as in the paper's Bézier experiment.
 const OFFSETS: usize = 20;
 
 /// `sigdt sweep`.
-pub fn sweep(args: &SweepArgs) -> Result<()> {
-    let methods: Vec<String> = methods(&args.method)?.iter().map(|m| m.to_string()).collect();
+pub fn run(args: &SweepArgs) -> Result<()> {
+    let methods = crate::methods::names(&args.method)?;
     let levels =
         if args.levels.is_empty() { default_levels(args.kind) } else { args.levels.clone() };
     if let Some(bad) = levels.iter().find(|l| !l.is_finite() || **l < 0.0) {
@@ -40,11 +96,7 @@ pub fn sweep(args: &SweepArgs) -> Result<()> {
             .with_context(|| format!("{}: cannot create the folder", dir.display()))?;
         let sets = generate(args, level, k as u64)?;
         let cases = write_folder(&dir, &sets, &args.source)?;
-        crate::run::note(&format!(
-            "level {level}: {} sets x {} methods",
-            cases.len(),
-            methods.len()
-        ));
+        note(&format!("level {level}: {} sets x {} methods", cases.len(), methods.len()));
         let plan = runner::Plan {
             dir: &dir,
             methods: &methods,
@@ -109,16 +161,16 @@ fn generate(args: &SweepArgs, level: f64, k: u64) -> Result<Vec<(String, Labelle
     let seed = |i: usize| 1000 * (k + 1) + i as u64;
     match args.kind {
         SweepKind::Noise | SweepKind::Outliers => {
-            let mut cases = dataset::read_index(&args.source, &args.categories, None)?;
+            let mut cases = cases::select(&args.source, &args.categories, None)?;
             cases.truncate(args.limit.unwrap_or(usize::MAX));
             if cases.is_empty() {
                 bail!("{}: no case of the categories {:?}", args.source.display(), args.categories);
             }
             let mut sets = Vec::new();
             for (i, case) in cases.iter().enumerate() {
-                let (xy, gt, _) = dataset::case_files(&args.source, &case.name);
-                let clean = sigdt::io::read_points(&xy)?;
-                let gt = sigdt::io::read_edges(&gt)?;
+                let files = case.row.files(&args.source);
+                let clean = sigdt::io::read_points(&files.points)?;
+                let gt = sigdt::io::read_edges(&files.gt)?;
                 let labelled = if args.kind == SweepKind::Noise {
                     let points = sigdt::samplers::uniform_noise(&clean, level, seed(i))?;
                     Labelled { points, gt, truth: Some(clean) }
@@ -126,7 +178,7 @@ fn generate(args: &SweepArgs, level: f64, k: u64) -> Result<Vec<(String, Labelle
                     let points = sigdt::samplers::add_outliers(&clean, level, seed(i))?;
                     Labelled { points, gt, truth: None }
                 };
-                sets.push((case.name.clone(), labelled));
+                sets.push((case.row.name.clone(), labelled));
             }
             Ok(sets)
         }
@@ -153,13 +205,13 @@ fn write_folder(dir: &Path, sets: &[(String, Labelled)], source: &Path) -> Resul
     for (name, set) in sets {
         write_labelled(&dir.join(format!("{name}.xy")), set, source)?;
         writeln!(index, "{name},sweep,{},", set.points.len()).expect("writing to a String");
-        cases.push(Case {
+        let row = dataset::Case {
             name: name.clone(),
             category: "sweep".into(),
             n_points: set.points.len(),
             epsilon: None,
-            graph_epsilon: None,
-        });
+        };
+        cases.push(Case { row, graph_epsilon: None });
     }
     std::fs::write(dir.join("index.csv"), index)
         .with_context(|| format!("{}: cannot write index.csv", dir.display()))?;
@@ -214,7 +266,7 @@ fn write_outputs(args: &SweepArgs, methods: &[String], rows: &[Row]) -> Result<(
     for (name, text) in [("sweep.csv", csv), ("rmse.svg", rmse), ("exact.svg", exact)] {
         let path = args.out.join(name);
         std::fs::write(&path, text).with_context(|| format!("{}: cannot write", path.display()))?;
-        crate::run::note(&format!("wrote {}", path.display()));
+        note(&format!("wrote {}", path.display()));
     }
     Ok(())
 }

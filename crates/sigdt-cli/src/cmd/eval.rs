@@ -1,0 +1,59 @@
+//! `sigdt eval`: the metrics of one result against ground truth, one `name: value` a line.
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use clap::Args;
+use sigdt::{Method, Options};
+
+use crate::input::Input;
+
+/// `sigdt eval`.
+#[derive(Debug, Args)]
+pub struct EvalArgs {
+    /// Point file, or '-' for standard input.
+    #[arg(value_name = "INPUT")]
+    pub input: PathBuf,
+    /// Ground-truth edges ('i j' per line, indices into INPUT).
+    #[arg(long, value_name = "FILE")]
+    pub gt: PathBuf,
+    /// Score this edge file instead of running a method.
+    #[arg(long, value_name = "FILE", conflicts_with = "method")]
+    pub edges: Option<PathBuf>,
+    /// Method to run and score.
+    #[arg(long, value_name = "METHOD", value_parser = crate::methods::parser(),
+          default_value_t = Method::default())]
+    pub method: Method,
+}
+
+/// `sigdt eval`.
+pub fn run(args: &EvalArgs, input: &Input) -> Result<()> {
+    let points = input.points(&args.input)?;
+    let gt = sigdt::io::read_edges(&args.gt)?;
+    let (label, edges) = match &args.edges {
+        Some(file) => (file.display().to_string(), sigdt::io::read_edges(file)?),
+        None => {
+            let options = Options { method: args.method, ..Options::default() };
+            (args.method.to_string(), sigdt::reconstruct(&points, &options)?.edges)
+        }
+    };
+    let m = sigdt_lab::eval::evaluate(&points, &edges, &gt)?;
+    let epsilon = sigdt_lab::eval::graph_epsilon(&points, &gt)?;
+    let opt = |v: Option<f64>| v.map_or("undefined".to_string(), |v| format!("{v:.6e}"));
+    let mut lines = vec![
+        format!("result:             {label}"),
+        format!("exact:              {}", if m.exact { "yes" } else { "no" }),
+        format!("edges:              {} (ground truth {})", edges.len(), gt.len()),
+        format!("missing edges:      {}", m.missing),
+        format!("extra edges:        {}", m.extra),
+        format!("rmse:               {}", opt(m.distance.map(|d| d.rmse))),
+        format!("rmse to gt:         {}", opt(m.distance.map(|d| d.rmse_to_gt))),
+        format!("hausdorff:          {}", opt(m.distance.map(|d| d.hausdorff))),
+        format!("area difference:    {:.6e}", m.area.area),
+        format!("area difference / ground-truth box: {}", opt(m.area.normalised)),
+        format!("epsilon:            {epsilon:.4} (graph-based, of the labelled sample)"),
+    ];
+    lines.push(String::new());
+    print!("{}", lines.join("\n"));
+    Ok(())
+}

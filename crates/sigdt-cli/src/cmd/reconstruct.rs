@@ -1,0 +1,97 @@
+//! `sigdt reconstruct`: the curve(s) through the points, in one of the output formats.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::Result;
+use clap::builder::{PossibleValuesParser, TypedValueParser};
+use clap::Args;
+use sigdt::{Method, Options, Reconstruction, Status};
+
+use crate::format::OutputFormat;
+use crate::input::Input;
+use crate::messages::note;
+use crate::output::Output;
+
+/// `sigdt reconstruct`.
+#[derive(Debug, Args)]
+pub struct ReconstructArgs {
+    /// Point file, or '-' for standard input.
+    #[arg(value_name = "INPUT")]
+    pub input: PathBuf,
+    /// Write the result to OUT instead of standard output ('-' is standard output).
+    #[arg(short, long = "output", value_name = "OUT")]
+    pub output: Option<PathBuf>,
+    /// Output format [default: from OUT's extension, else edges].
+    #[arg(long, value_name = "FORMAT", value_parser = format_parser())]
+    pub format: Option<OutputFormat>,
+    /// Reconstruction method.
+    #[arg(long, value_name = "METHOD", value_parser = crate::methods::parser(),
+          default_value_t = Method::default())]
+    pub method: Method,
+    /// Do not give SIGDT leaves their shortest missing Delaunay edge before inflating
+    /// (leaf elimination, SIGDT2, is on by default).
+    #[arg(long)]
+    pub no_leaf_elimination: bool,
+    /// Print a summary (counts, status, time, per-stage statistics) to stderr.
+    #[arg(short, long)]
+    pub verbose: bool,
+}
+
+/// `sigdt reconstruct`.
+pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
+    let output = Output::new(args.output.as_deref(), &args.input)?;
+    let format = args
+        .format
+        .or_else(|| args.output.as_deref().and_then(OutputFormat::from_path))
+        .unwrap_or_default();
+    let points = input.points(&args.input)?;
+    let options = Options { method: args.method, leaf_elimination: !args.no_leaf_elimination };
+    let start = Instant::now();
+    let rec = sigdt::reconstruct(&points, &options)?;
+    let elapsed = start.elapsed().as_secs_f64() * 1e3;
+    if args.verbose {
+        summary(&options, &rec, elapsed);
+    } else if let Status::SculptingStuck { .. } = rec.status {
+        note(&format!("sigdt: warning: {}", rec.status));
+    }
+    output.write(|w| format.write(w, &points, &rec))
+}
+
+/// `--format` values, listed in the help and checked by clap.
+fn format_parser() -> impl TypedValueParser<Value = OutputFormat> {
+    let names = OutputFormat::ALL.iter().map(|f| f.name());
+    PossibleValuesParser::new(names).try_map(|s| s.parse::<OutputFormat>())
+}
+
+/// Prints the `--verbose` summary of a run to stderr.
+fn summary(options: &Options, rec: &Reconstruction, ms: f64) {
+    let s = &rec.stats;
+    let method = match options.method {
+        // CONNECT2D always adds leaf edges to its BC0; the option applies to SIGDT only.
+        Method::Connect2d => options.method.to_string(),
+        _ => {
+            let leaves = if options.leaf_elimination { "on" } else { "off" };
+            format!("{} (leaf elimination {leaves})", options.method)
+        }
+    };
+    let lines = [
+        format!("method:                    {method}"),
+        format!("points:                    {}", s.points),
+        format!("distinct points:           {}", s.distinct_points),
+        format!("duplicates:                {}", rec.duplicates.len()),
+        format!("edges:                     {}", rec.edges.len()),
+        format!("loops:                     {}", rec.loops.len()),
+        format!("paths:                     {}", rec.paths.len()),
+        format!("status:                    {} ({})", rec.status.name(), rec.status),
+        format!("time:                      {ms:.3} ms"),
+        format!("graph edges:               {}", s.graph_edges),
+        format!("leaf edges added:          {}", s.leaf_edges_added),
+        format!("non-manifold before:       {}", s.non_manifold_before),
+        format!("inflated triangles:        {}", s.inflated_triangles),
+        format!("pockets:                   {}", s.pockets),
+        format!("interior before sculpting: {}", s.interior_before_sculpting),
+        format!("sculpted triangles:        {}", s.sculpted_triangles),
+    ];
+    note(&lines.join("\n"));
+}
