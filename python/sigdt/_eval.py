@@ -7,7 +7,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from ._api import _as_points
+from ._input import _as_points
 
 __all__ = ["evaluate", "graph_epsilon", "graph_overlap"]
 

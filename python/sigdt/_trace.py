@@ -8,8 +8,8 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from ._api import LEAF_ELIMINATION, _as_points, _check_method
 from ._core import PHASES  # the names of the codes in Trace.step_phase (Rust's Phase::ALL)
+from ._input import LEAF_ELIMINATION, _as_points, _check_method
 
 __all__ = ["PHASES", "Trace", "trace"]
 
