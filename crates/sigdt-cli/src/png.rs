@@ -1,4 +1,4 @@
-//! Rasterising the SVG pictures of `sigdt::render` to PNG with `resvg` (pure Rust).
+//! Rasterising the SVG pictures of `sigdt_lab::render` to PNG with `resvg` (pure Rust).
 //!
 //! Text is drawn with the system's fonts, loaded once per call: the generic `sans-serif`
 //! and `serif` families resolve to the first installed of DejaVu Sans, Liberation Sans,
