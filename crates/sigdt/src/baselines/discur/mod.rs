@@ -3,9 +3,9 @@
 //!
 //! \[ZNYL08\] Y. Zeng, T. A. Nguyen, B. Yan, S. Li, *A distance-based parameter free algorithm
 //! for curve reconstruction* (DISCUR), Computer-Aided Design 40(2), 2008. The paper's text was
-//! not at hand. What is known of it first hand (its abstract, `docs/algorithms.md` §3.9) is
-//! that it has no parameter and rests on two principles of human visual perception, read
-//! here as *proximity* (a point is connected to its nearest neighbour first) and a
+//! not at hand. What is known of it from its abstract (as `docs/algorithms.md` §3.9 reports
+//! it) is that it has no parameter and rests on two principles of human visual perception,
+//! read here as *proximity* (a point is connected to its nearest neighbour first) and a
 //! *statistical* criterion (a curve takes a new link only if its length fits the lengths the
 //! curve already has). Everything else is **reconstructed**:
 //! - the decision order (two passes over the Delaunay edges, shortest first; free–free edges
