@@ -53,6 +53,7 @@ const FLOORS_FILTERS: &[(Method, [usize; 7])] = &[
     (Method::NnCrust, [103, 82, 27, 25, 19, 29, 0]),
     (Method::HnnCrust, [103, 81, 34, 53, 26, 35, 11]),
     (Method::Crawl, [99, 80, 39, 24, 26, 35, 13]),
+    (Method::Discur, [83, 70, 35, 44, 27, 33, 7]),
     (Method::Peel, [104, 82, 33, 51, 26, 35, 10]),
     (Method::Emst, [0, 0, 0, 54, 0, 0, 0]),
 ];

@@ -43,6 +43,10 @@ pub enum Method {
     /// CRAWL (Parakkat, Muthuganapathy 2016): grow paths from nearest-neighbour seeds by
     /// the nearest unvisited Delaunay neighbour.
     Crawl,
+    /// DISCUR (Zeng, Nguyen, Yan, Li 2008): grow curves along the Delaunay edges, shortest
+    /// first; a curve takes a longer edge only if it fits the curve's spacing statistics.
+    /// Reconstructed without the paper's text (`docs/algorithms.md` §3.9).
+    Discur,
     /// PEEL (Parakkat, Methirumangalath, Muthuganapathy 2018): drop every triangle's longest
     /// edge, then filter.
     Peel,
@@ -60,6 +64,7 @@ impl Method {
         Method::NnCrust,
         Method::HnnCrust,
         Method::Crawl,
+        Method::Discur,
         Method::Peel,
         Method::Emst,
     ];
@@ -74,6 +79,7 @@ impl Method {
             Method::NnCrust => "nn-crust",
             Method::HnnCrust => "hnn-crust",
             Method::Crawl => "crawl",
+            Method::Discur => "discur",
             Method::Peel => "peel",
             Method::Emst => "emst",
         }
@@ -139,6 +145,7 @@ pub fn reconstruct_on(dt: &Triangulation, options: &Options) -> Reconstruction {
         Method::NnCrust => baselines::nn_crust::nn_crust,
         Method::HnnCrust => baselines::hnn_crust::hnn_crust,
         Method::Crawl => baselines::crawl::crawl,
+        Method::Discur => baselines::discur::discur,
         Method::Peel => baselines::peel::peel,
         Method::Emst => baselines::emst::emst,
     };

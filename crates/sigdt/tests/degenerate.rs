@@ -5,7 +5,7 @@
 //!   by every method (`reconstruct::degenerate`): the path along the line, or none or one edge.
 //! - On proper input SIG-CONNECT2D and CONNECT2D are held to an exact answer. The graph
 //!   filters (CRUST and its kin) only have to keep the invariants and not panic, except
-//!   where a case says more.
+//!   where a case says more (SIG-AUTO and DISCUR often do).
 //!
 //! Heavy sizes (10⁵ points) run in release builds only; debug builds use smaller sizes of
 //! the same shapes, so `cargo test` stays quick. Each run prints one line
@@ -181,7 +181,7 @@ fn moved_from_configurations() {
     for (method, rec) in run_all("square + duplicate vertex", &points) {
         assert_eq!(rec.duplicates, vec![[4, 1]], "{method}");
         assert!(!rec.edges.iter().flatten().any(|&i| i == 4), "{method}");
-        if is_connect_or_auto(method) {
+        if is_connect_or_auto(method) || method == Method::Discur {
             assert_eq!(rec.edges, vec![[0, 1], [0, 3], [1, 2], [2, 3]], "{method}");
             assert_eq!(rec.status, Status::Polygon, "{method}");
         }
@@ -200,10 +200,11 @@ fn three_points_give_the_triangle() {
     // A right triangle, clockwise. SIG-CONNECT2D and CONNECT2D: the triangle, counter-
     // clockwise from index 0. The graph filters: the path along the two legs (CRUST: the
     // Voronoi vertex lies on the hypotenuse; the others find the legs shorter). SIG-AUTO
-    // closes the legs' path: the hypotenuse is less than twice the longest leg.
+    // closes the legs' path: the hypotenuse is less than twice the longest leg. DISCUR
+    // closes it too: for a curve of two unit edges the criterion takes up to about 2.05.
     let points = [[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]];
     for (method, rec) in run_all("three points", &points) {
-        if is_connect(method) || method == Method::SigAuto {
+        if is_connect(method) || matches!(method, Method::SigAuto | Method::Discur) {
             assert_eq!((&rec.status, &rec.loops), (&Status::Polygon, &vec![vec![0, 2, 1]]));
         } else {
             assert_eq!((&rec.status, &rec.paths), (&Status::Curves, &vec![vec![1, 0, 2]]));
@@ -236,7 +237,7 @@ fn exact_duplicates_of_a_curve_are_ignored() {
         assert_eq!(rec.duplicates, duplicates, "{method}");
         assert_eq!(rec.stats.distinct_points, 100, "{method}");
         assert!(rec.edges.iter().flatten().all(|&i| i < 100), "{method}: a duplicate has an edge");
-        if is_connect_or_auto(method) {
+        if is_connect_or_auto(method) || method == Method::Discur {
             assert_eq!((&rec.status, &rec.edges), (&Status::Polygon, &base.edges), "{method}");
         }
     }
@@ -263,6 +264,12 @@ fn near_duplicates_1e_12_apart_stay_adjacent() {
             // curve.
             sig_auto_keeps_open("near-duplicates 1e-12", &rec, 128, 64);
             assert!((0..64).all(|i| rec.paths.contains(&vec![i, i + 64])));
+        }
+        if method == Method::Discur {
+            // The twins connect first; a side (0.1) is 1e11 times a twin curve's spacing,
+            // far beyond its criterion: the same 64 two-point curves.
+            assert_eq!(rec.status, Status::Curves, "{method}");
+            assert_eq!(rec.paths, (0..64).map(|i| vec![i, i + 64]).collect::<Vec<_>>());
         }
     }
 }
@@ -344,7 +351,12 @@ fn line_with_point_off(case: &str, n: usize, off: Point) -> Vec<(Method, Reconst
 
 #[test]
 fn a_line_with_one_point_1e_9_off_is_a_thin_triangle() {
-    line_with_point_off("line + point 1e-9 off", 100, [49.5, 1e-9]);
+    let results = line_with_point_off("line + point 1e-9 off", 100, [49.5, 1e-9]);
+    // DISCUR: the point off is 0.5 from its two neighbours on the line, nearer than they are
+    // to each other, so it joins the path between them.
+    let (_, rec) = results.iter().find(|(m, _)| *m == Method::Discur).unwrap();
+    let path: Vec<usize> = (0..50).chain([100]).chain(50..100).collect();
+    assert_eq!((&rec.status, &rec.paths), (&Status::Curves, &vec![path]));
     // One unit in the last place (7e-15) above the line y = x: exact predicates see it.
     let mut points: Vec<Point> = (0..100).map(|i| [f64::from(i), f64::from(i)]).collect();
     points.push([60.5, f64::from_bits(60.5f64.to_bits() + 1)]);
@@ -390,7 +402,11 @@ fn a_long_line_with_one_point_off() {
     // 10^5 collinear points and one point off, last in the input: the triangulation is a fan
     // around one vertex of degree 10^5. `make bench` measures how the time grows with n.
     let n = size(100_000, 5_000);
-    line_with_point_off("line 1e5 + point 1 off", n, [n as f64 / 2.0 + 0.5, 1.0]);
+    let results = line_with_point_off("line 1e5 + point 1 off", n, [n as f64 / 2.0 + 0.5, 1.0]);
+    // DISCUR: the line is one curve before any edge to the point off (at least 1.1 long)
+    // comes up; those reach inner points, or the line's ends n/2 away: the point stays free.
+    let (_, rec) = results.iter().find(|(m, _)| *m == Method::Discur).unwrap();
+    assert_eq!((&rec.status, &rec.paths), (&Status::Curves, &vec![(0..n).collect()]));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -426,6 +442,16 @@ fn square_grid(k: usize) {
             assert_eq!(left_out.len(), grid_left_out(k), "{case}, {method}");
             assert_eq!(rec.loops.len(), 1, "{case}, {method}");
             assert_eq!(rec.edges.len(), k * k - left_out.len(), "{case}, {method}");
+        }
+        if method == Method::Discur {
+            // Every unit edge ties; in index order (row by row) each pair of rows becomes
+            // one loop, k/2 of them. Pinned to tie-breaking by input index.
+            assert_eq!(rec.status, Status::Polygons, "{case}, {method}");
+            assert_eq!(rec.loops.len(), k / 2, "{case}, {method}");
+            for l in &rec.loops {
+                let pair = l[0] / k / 2;
+                assert!(l.len() == 2 * k && l.iter().all(|&i| i / k / 2 == pair), "{l:?}");
+            }
         }
     }
 }

@@ -3,6 +3,7 @@
 //! ground-truth edge in SIGDT, and SIG-CONNECT2D returns exactly the ground truth. Results
 //! do not depend on input order, translation, uniform scaling or a 90° rotation. SIG-AUTO
 //! returns the same closed curve, and keeps the curve open when a stretch of it is cut out.
+//! DISCUR's result does not depend on input order either.
 //!
 //! The seed is fixed so CI is reproducible; explore with e.g.
 //! `PROPTEST_RNG_SEED=123 PROPTEST_CASES=2000 cargo test --release --test properties`.
@@ -123,5 +124,26 @@ proptest! {
         prop_assert!(rec.loops.is_empty());
         let path: Vec<usize> = (0..points.len()).collect();
         prop_assert_eq!(&rec.paths, &vec![path], "open curve not exact");
+    }
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    #[test]
+    fn discur_does_not_depend_on_input_order(sample in dense_blob(), shuffle in any::<u64>()) {
+        // Lengths tie only by accident here, so ordering ties by input index never matters.
+        let options = Options { method: Method::Discur, ..Options::default() };
+        let base = reconstruct(&sample.points, &options).unwrap();
+        prop_assert!(check_reconstruction(&sample.points, &base).is_ok());
+        let s = sample.shuffled(shuffle);
+        let order: Vec<usize> = s.points.iter()
+            .map(|p| sample.points.iter().position(|q| q == p).unwrap())
+            .collect();
+        let mut relabelled: Vec<Edge> = reconstruct(&s.points, &options).unwrap().edges.iter()
+            .map(|&[i, j]| { let (a, b) = (order[i], order[j]); [a.min(b), a.max(b)] })
+            .collect();
+        relabelled.sort_unstable();
+        prop_assert_eq!(&relabelled, &base.edges, "permutation");
     }
 }

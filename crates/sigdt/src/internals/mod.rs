@@ -4,8 +4,10 @@
 mod testing;
 
 pub use crate::baselines::connect2d::bc0;
+pub use crate::baselines::discur::{discur_variant, Variant as DiscurVariant};
 pub use crate::baselines::{
-    crawl::crawl, crust::crust, hnn_crust::hnn_crust, nn_crust::nn_crust, peel::peel,
+    crawl::crawl, crust::crust, discur::discur, hnn_crust::hnn_crust, nn_crust::nn_crust,
+    peel::peel,
 };
 pub use crate::connect::boundary::{Boundary, VertexClass};
 pub use crate::connect::extract::{loop_edges, loops};
