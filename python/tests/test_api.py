@@ -434,6 +434,7 @@ def test_methods_and_graph_kinds():
         "nn-crust",
         "hnn-crust",
         "crawl",
+        "discur",
         "peel",
         "emst",
     ]

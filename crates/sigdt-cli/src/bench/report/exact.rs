@@ -35,7 +35,11 @@ pub(super) fn paper_name(method: &str) -> Option<&'static str> {
         "gathan1" => "GATHAN1",
         "gathang" => "GATHANG",
         "crawl" => "CRAWL",
+        "discur" => "DISCUR",
         "peel" => "PEEL",
+        "fitconnect" => "FITCONNECT",
+        "stretch-denoise" => "STRETCHDENOISE",
+        "optimal-transport" => "OPTIMALTRANSPORT",
         _ => return None,
     })
 }
