@@ -37,6 +37,43 @@ pub fn orient2d(p: Point, q: Point, r: Point) -> f64 {
     )
 }
 
+/// Distance from `q` to the closed segment `ab` (to `a` when the segment is a point).
+pub fn segment_distance(q: Point, a: Point, b: Point) -> f64 {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 {
+        (((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let foot = [a[0] + t * dx, a[1] + t * dy];
+    (q[0] - foot[0]).hypot(q[1] - foot[1])
+}
+
+/// Distance from `q` to the ray that starts at `from` and goes on in the direction
+/// `behind → from` (to `from` when the two coincide): the straight continuation of the
+/// segment `behind from` beyond `from`, plus `from` itself.
+pub fn ray_distance(q: Point, behind: Point, from: Point) -> f64 {
+    let (dx, dy) = (from[0] - behind[0], from[1] - behind[1]);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 {
+        (((q[0] - from[0]) * dx + (q[1] - from[1]) * dy) / len2).max(0.0)
+    } else {
+        0.0
+    };
+    let foot = [from[0] + t * dx, from[1] + t * dy];
+    (q[0] - foot[0]).hypot(q[1] - foot[1])
+}
+
+/// How much the polyline `p → q → r` turns at `q`, in radians: 0 straight on, π straight
+/// back. A cost, not a predicate: plain `f64` (`atan2` of the cross and dot products).
+pub fn turning(p: Point, q: Point, r: Point) -> f64 {
+    let (u, v) = ([q[0] - p[0], q[1] - p[1]], [r[0] - q[0], r[1] - q[1]]);
+    let cross = u[0] * v[1] - u[1] * v[0];
+    let dot = u[0] * v[0] + u[1] * v[1];
+    cross.abs().atan2(dot)
+}
+
 /// Whether the segments `ab` and `cd` cross at a point interior to both (exact). Segments
 /// that only touch at an end point, or overlap collinearly, do not count as crossing.
 pub fn segments_cross(a: Point, b: Point, c: Point, d: Point) -> bool {
@@ -63,6 +100,20 @@ mod tests {
         assert!(segments_cross([0.0, 0.0], [2.0, 2.0], [0.0, 2.0], [2.0, 0.0]));
         assert!(!segments_cross([0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]));
         assert!(!segments_cross([0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0]));
+    }
+
+    #[test]
+    fn segments_rays_and_turns() {
+        assert_eq!(segment_distance([1.0, 2.0], [0.0, 0.0], [2.0, 0.0]), 2.0);
+        assert_eq!(segment_distance([5.0, 0.0], [0.0, 0.0], [2.0, 0.0]), 3.0);
+        assert_eq!(segment_distance([0.0, 1.0], [3.0, 3.0], [3.0, 3.0]), 13f64.sqrt());
+        // The ray from (1, 0) goes on towards +x; behind it only its start counts.
+        assert_eq!(ray_distance([5.0, 1.0], [0.0, 0.0], [1.0, 0.0]), 1.0);
+        assert_eq!(ray_distance([-3.0, 0.0], [0.0, 0.0], [1.0, 0.0]), 4.0);
+        let quarter = turning([0.0, 0.0], [1.0, 0.0], [1.0, 1.0]);
+        assert!((quarter - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        assert_eq!(turning([0.0, 0.0], [1.0, 0.0], [2.0, 0.0]), 0.0);
+        assert_eq!(turning([0.0, 0.0], [1.0, 0.0], [0.0, 0.0]), std::f64::consts::PI);
     }
 
     #[test]

@@ -3,8 +3,8 @@
 //!
 //! Every function takes the input points and edges `[i, j]` over their 0-based indices, in
 //! any order and direction. Entry points validate once: a non-finite point gives
-//! [`Error::NonFinite`](crate::Error::NonFinite), an edge index out of range
-//! [`Error::InvalidOption`](crate::Error::InvalidOption) naming the edge.
+//! [`Error::NonFinite`](sigdt::Error::NonFinite), an edge index out of range
+//! [`Error::InvalidOption`](sigdt::Error::InvalidOption) naming the edge.
 
 mod area;
 mod bvh;

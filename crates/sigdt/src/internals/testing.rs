@@ -73,12 +73,14 @@ pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<()
         return Err("edges differ from the edges of the loops and paths".into());
     }
     if rec.status.is_manifold() {
-        let duplicate: Vec<bool> = {
+        // Duplicates and the points left out on purpose are on no loop.
+        let off: Vec<bool> = {
             let mut d = vec![false; n];
             rec.duplicates.iter().for_each(|&[i, _]| d[i] = true);
+            rec.left_out.iter().filter(|l| l.index < n).for_each(|l| d[l.index] = true);
             d
         };
-        if let Some(v) = (0..n).find(|&v| !duplicate[v] && !on_chain[v]) {
+        if let Some(v) = (0..n).find(|&v| !off[v] && !on_chain[v]) {
             return Err(format!("status {} but point {v} is on no loop", rec.status.name()));
         }
         if !rec.paths.is_empty() {

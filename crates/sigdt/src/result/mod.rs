@@ -114,11 +114,12 @@ pub enum Vertices {
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 #[non_exhaustive]
 pub enum Status {
-    /// One closed simple polygon through every distinct point.
+    /// One closed simple polygon through every distinct point (but those listed in
+    /// [`Reconstruction::left_out`] as outliers).
     #[default]
     Polygon,
     /// Several pairwise disjoint closed simple polygons that together pass through every
-    /// distinct point (the graph had several components, none inside another).
+    /// distinct point (but the outliers left out).
     Polygons,
     /// Sculpting found no candidate triangle while these points (input indices, sorted)
     /// were still inside the boundary. The loops are simple and disjoint but miss them.

@@ -1,23 +1,35 @@
-//! SIG-AUTO: SIG-CONNECT2D per component, with open curves kept open.
+//! SIG-AUTO: SIG-CONNECT2D per component, with open curves kept open, outliers left out
+//! and the reading smoothed where curves come closer than their spacing.
 //!
 //! SIG-CONNECT2D ([MOW22]) returns closed manifold polygons only; the paper names open and
 //! multiple curves as future work. SIG-AUTO starts from the same graph, SIGDT2 (SIGDT with
 //! leaf elimination), and decides per connected component:
 //!
-//! 1. **Chains.** If the component's minimum spanning tree (over its SIGDT2 edges) is a
+//! 1. **Outliers first** (`outliers`): a branch of a component's minimum spanning tree
+//!    that stays farther from the tree's main path than the sample spacing there is a set
+//!    of outliers. They are left out, and the rest is triangulated and read again (a few
+//!    rounds at most; see [`MAX_ROUNDS`]).
+//! 2. **Chains.** If the component's minimum spanning tree (over its SIGDT2 edges) is a
 //!    path, the component is a *chain*: a piece of curve, open or closed. Chains are then
 //!    joined end to end, and closed into loops, along Delaunay edges no longer than twice
-//!    the longest edge of the chains they join (`chain_join`, after
-//!    the non-uniformity condition `u < 2` of [MOW22] Theorem 1). What stays open is
-//!    returned as open paths.
-//! 2. **Everything else** (the spanning tree branches: extra SIGDT edges at sharp corners,
+//!    the longest edge of the chains they join (`chain_join`, after the non-uniformity
+//!    condition `u < 2` of [MOW22] Theorem 1). What stays open is returned as open paths.
+//! 3. **Everything else** (the spanning tree branches: extra SIGDT edges at sharp corners,
 //!    noise, dense clusters) is inflated and sculpted like SIG-CONNECT2D, but on the
-//!    component's own triangulation (`closed_component`), so
-//!    curves nested in one another stay separate loops. A loop is cut open at its longest
-//!    edge when that edge is more than twice the second longest. If some loop edge is more
-//!    than twice the longest edge of the component's SIGDT spanning forest (a leaf edge
-//!    reaching across), the component's SIGDT pieces are used as chains instead, when each
-//!    is a path with branches of at most four samples (`spur_path`).
+//!    component's own triangulation (`closed_component`), so curves nested in one another
+//!    stay separate loops. A loop is cut open at its longest edge when that edge is more
+//!    than twice the second longest. If some loop edge is more than twice the longest edge
+//!    of the component's SIGDT spanning forest (a leaf edge reaching across), the
+//!    component's SIGDT pieces are used as chains instead, when each is a path with
+//!    branches of at most four samples (`spur_path`).
+//! 4. **Detours** (`outliers`): a run of the reading that leaves the curve by more than
+//!    the spacing and comes back to the next sample is cut out; its points are outliers.
+//! 5. **Good continuation** (`continuation`): 2-opt moves along Delaunay edges that lower
+//!    the reading's total turning while every new edge keeps `u < 2`, so that two curves
+//!    the graph merged (islands closer together than their spacing) come apart again.
+//!
+//! Points left out are listed in the result with the reason `outlier`; a result whose
+//! loops pass through every point that is not left out is a `polygon` or `polygons`.
 //!
 //! # Guarantees
 //! - The output is always a set of vertex-disjoint simple loops and simple open paths made
@@ -33,15 +45,20 @@
 //! - Separate curves whose SIGDT2 components are separate (each curve sampled more densely
 //!   than the gap between them) are reconstructed independently, nested or not.
 //! - When the fallback applies (a loop of a component's own triangulation that is not a
-//!   Delaunay edge of all points, which could cross another component), the result is
-//!   SIG-CONNECT2D's.
+//!   Delaunay edge of all points, which could cross another component), the reading is
+//!   SIG-CONNECT2D's (before steps 4 and 5).
+//! - A point is left out only by the outlier rule, which never applies to a point within
+//!   the sample spacing of the curve through its neighbours: noisy samples stay in.
 //!
 //! # Complexity
-//! O(n log n) time, O(n) memory.
+//! O(n log n) time per round, O(n) memory, on curve input.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 mod chain_join;
 mod closed_component;
+mod continuation;
+mod outliers;
+mod reading;
 mod spanning_forests;
 mod spur_path;
 
@@ -49,14 +66,21 @@ use crate::delaunay::Triangulation;
 use crate::geometry::distance;
 use crate::proximity::sigdt::TIE_SLACK;
 use crate::result::{
-    degenerate_result, from_vertex_pairs, inside_left_out, Reconstruction, Stats, Status,
+    degenerate_result, from_vertex_pairs, inside_left_out, LeftOut, LeftOutReason, Reconstruction,
+    Stats, Status,
 };
 use crate::sig_connect2d::sig_connect2d_on;
 use chain_join::Chains;
 #[doc(hidden)]
 pub use chain_join::JOIN_RATIO;
 use closed_component::closed_component;
+use reading::Reading;
 use spanning_forests::Forests;
+
+/// The most rounds of outlier removal: later rounds still read their points, they only no
+/// longer look for tree branches to leave out. A safety bound for adversarial input; on the
+/// labelled data no case needs more than two (`docs/sig-auto.md`).
+pub const MAX_ROUNDS: usize = 16;
 
 /// Reconstructs `dt`'s points with SIG-AUTO (see the module docs).
 pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
@@ -71,7 +95,87 @@ pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstr
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
-    let forests = Forests::new(dt);
+    // Vertices of `dt` still read, and those left out as outliers so far.
+    let mut kept: Vec<u32> = (0..dt.num_vertices() as u32).collect();
+    let mut outliers: Vec<u32> = Vec::new();
+    for round in 0..MAX_ROUNDS {
+        let subset;
+        let sub = if round == 0 {
+            dt
+        } else {
+            let points: Vec<_> = kept.iter().map(|&v| dt.point(v)).collect();
+            match Triangulation::new(&points) {
+                Ok(t) => subset = t,
+                Err(_) => break, // unreachable: the points were valid in `dt`
+            }
+            &subset
+        };
+        // Vertex of `sub` -> vertex of `dt` (the same in the first round).
+        let whole = |v: u32| if round == 0 { v } else { kept[sub.input_index(v)] };
+        let read = match degenerate_result(sub) {
+            Some(line) => {
+                Read { pairs: sub.line_edges().collect(), inside: Vec::new(), stats: line.stats }
+            }
+            None => {
+                let forests = Forests::new(sub);
+                let found = if round + 1 < MAX_ROUNDS {
+                    branches_far_off(sub, &forests)
+                } else {
+                    Vec::new()
+                };
+                if !found.is_empty() {
+                    outliers.extend(found.iter().map(|&v| whole(v)));
+                    let gone: std::collections::HashSet<u32> =
+                        found.iter().map(|&v| whole(v)).collect();
+                    kept.retain(|v| !gone.contains(v));
+                    continue;
+                }
+                read_components(sub, &forests, join_ratio)
+            }
+        };
+        let mut reading = Reading::new(sub, &read.pairs);
+        let cut: Vec<u32> =
+            outliers::detour_outliers(&mut reading).into_iter().map(whole).collect();
+        if !cut.is_empty() && round + 1 < MAX_ROUNDS {
+            // Read the rest again: without the detours, the components are cleaner.
+            let gone: std::collections::HashSet<u32> = cut.iter().copied().collect();
+            kept.retain(|v| !gone.contains(v));
+            outliers.extend(cut);
+            continue;
+        }
+        outliers.extend(cut);
+        continuation::continue_smoothly(&mut reading);
+        let pairs: Vec<[u32; 2]> =
+            reading.pairs().into_iter().map(|[a, b]| [whole(a), whole(b)]).collect();
+        let inside: Vec<usize> = read.inside.iter().map(|&v| dt.input_index(whole(v))).collect();
+        return finish(dt, pairs, inside, &outliers, read.stats);
+    }
+    unreachable!("the last round always reads its points")
+}
+
+/// What reading the components of one round gave, in the vertex numbers of its
+/// triangulation.
+struct Read {
+    pairs: Vec<[u32; 2]>,
+    /// Points left inside where sculpting got stuck.
+    inside: Vec<u32>,
+    stats: Stats,
+}
+
+/// The branches of every component's SIGDT2 spanning tree that are outliers.
+fn branches_far_off(dt: &Triangulation, forests: &Forests) -> Vec<u32> {
+    let tree = &forests.sigdt2;
+    let mut found = Vec::new();
+    for (vertices, branched) in forests.components() {
+        if branched {
+            found.extend(outliers::branch_outliers(dt, &vertices, |v| tree.neighbours(v).to_vec()));
+        }
+    }
+    found
+}
+
+/// Steps 2 and 3 of the module docs on every component of `dt`.
+fn read_components(dt: &Triangulation, forests: &Forests, join_ratio: f64) -> Read {
     let (graph, sigdt, tree) = (&forests.graph, &forests.sigdt, &forests.sigdt2);
     let mut stats = Stats {
         graph_edges: graph.len(),
@@ -79,7 +183,7 @@ pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstr
         ..Stats::default()
     };
     let mut pairs: Vec<[u32; 2]> = Vec::new();
-    let mut left_out: Vec<usize> = Vec::new();
+    let mut inside: Vec<u32> = Vec::new();
     let mut chains = Chains::new(dt, join_ratio);
     for (vertices, branched) in forests.components() {
         if !branched {
@@ -89,7 +193,7 @@ pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstr
             continue;
         }
         let Some(closed) = closed_component(dt, graph, &vertices, join_ratio) else {
-            return sig_connect2d_on(dt, true);
+            return fallback(dt);
         };
         let bound = join_ratio * sigdt.longest_edge(dt, &vertices) * (1.0 + TIE_SLACK);
         let within = |&[a, b]: &[u32; 2]| distance(dt.point(a), dt.point(b)) <= bound;
@@ -103,15 +207,53 @@ pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstr
             }
         }
         pairs.extend(closed.edges);
-        left_out.extend(closed.left_out.iter().map(|&v| dt.input_index(v)));
+        inside.extend(closed.left_out);
         add_counts(&mut stats, &closed.stats);
     }
     pairs.extend(chains.join());
+    Read { pairs, inside, stats }
+}
+
+/// SIG-CONNECT2D's reading of `dt`, for when a component's own loops could cross another
+/// component.
+fn fallback(dt: &Triangulation) -> Read {
+    let rec = sig_connect2d_on(dt, true);
+    let mut vertex_of = vec![u32::MAX; dt.input_len()];
+    for v in 0..dt.num_vertices() as u32 {
+        vertex_of[dt.input_index(v)] = v;
+    }
+    let to_vertex = |i: usize| vertex_of[i];
+    let inside = rec.left_out.iter().map(|l| to_vertex(l.index)).collect();
+    let pairs = rec.edges.iter().map(|&[i, j]| [to_vertex(i), to_vertex(j)]).collect();
+    Read { pairs, inside, stats: rec.stats }
+}
+
+/// The result of the reading `pairs` (vertices of `dt`), with the points left inside by
+/// sculpting (`inside`, input indices) and the outliers (vertices of `dt`) left out.
+fn finish(
+    dt: &Triangulation,
+    pairs: Vec<[u32; 2]>,
+    mut inside: Vec<usize>,
+    outliers: &[u32],
+    stats: Stats,
+) -> Reconstruction {
     let mut rec = from_vertex_pairs(dt, pairs, stats);
-    if !left_out.is_empty() {
-        left_out.sort_unstable();
-        rec.left_out = inside_left_out(&left_out);
-        rec.status = Status::SculptingStuck { left_out };
+    inside.sort_unstable();
+    rec.left_out = inside_left_out(&inside);
+    rec.left_out.extend(
+        outliers
+            .iter()
+            .map(|&v| LeftOut { index: dt.input_index(v), reason: LeftOutReason::Outlier }),
+    );
+    rec.left_out.sort_unstable();
+    if !inside.is_empty() {
+        rec.status = Status::SculptingStuck { left_out: inside };
+    } else if rec.status == Status::Curves && rec.paths.is_empty() && !rec.loops.is_empty() {
+        // Every point that is not an outlier is on a loop.
+        let on_loops: usize = rec.loops.iter().map(Vec::len).sum();
+        if on_loops + outliers.len() == dt.num_vertices() {
+            rec.status = if rec.loops.len() == 1 { Status::Polygon } else { Status::Polygons };
+        }
     }
     rec
 }

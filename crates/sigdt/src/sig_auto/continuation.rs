@@ -1,0 +1,135 @@
+//! Good continuation: 2-opt moves on the reading that lower its total turning.
+//!
+//! A move takes two reading edges `ab` and `cd` whose ends are joined by the Delaunay edges
+//! `ac` and `bd`, and replaces them by `ac` and `bd`. Every vertex keeps its number of
+//! edges, so loops and paths stay loops and paths; a loop may split into two (two curves that
+//! the graph had merged, such as islands closer together than their sample spacing), two
+//! loops may merge, or a stretch may be reversed (a zigzag across a corner). Every new edge
+//! is a Delaunay edge, so no two edges cross.
+//!
+//! A move is made only when it lowers the sum of the turning angles at `a`, `b`, `c` and `d`
+//! (the only vertices whose angle changes), and when both new edges satisfy the
+//! non-uniformity condition `u < 2` of [MOW22] Theorem 1 against the other edge at each of
+//! their ends: a sampled curve turns little from sample to sample (at most 60° at every
+//! sample of an ε < 1 sampling) and changes its spacing by less than a factor of two, so
+//! among readings that respect the spacing, the one that turns least follows the curve.
+//! Moves are taken largest gain first; each lowers the total turning, so the process ends.
+//!
+//! # Complexity
+//! O(n · d³) to collect the first moves (`d` the Delaunay degree), then O(d³ log n) per move.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+use super::outliers::u_below_2;
+use super::reading::{Reading, NONE};
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+/// The smallest gain in radians that counts: below it, two readings turn the same.
+const MIN_GAIN: f64 = 1e-9;
+
+/// Makes every improving move (see the module docs).
+pub(crate) fn continue_smoothly(reading: &mut Reading<'_>) {
+    let n = reading.dt.num_vertices();
+    let mut queue = BinaryHeap::new();
+    for a in 0..n as u32 {
+        for b in reading.neighbours(a).into_iter().filter(|&b| b != NONE) {
+            push_moves(reading, a, b, &mut queue);
+        }
+    }
+    while let Some(Move { gain, a, b, c, d }) = queue.pop() {
+        let valid = reading.joined(a, b)
+            && reading.joined(c, d)
+            && !reading.joined(a, c)
+            && !reading.joined(b, d)
+            && respects_spacing(reading, a, b, c, d);
+        if !valid {
+            continue;
+        }
+        let now = gain_of(reading, a, b, c, d);
+        if now <= MIN_GAIN {
+            continue;
+        }
+        if now != gain {
+            queue.push(Move { gain: now, a, b, c, d });
+            continue;
+        }
+        reading.relink(a, b, c);
+        reading.relink(b, a, d);
+        reading.relink(c, d, a);
+        reading.relink(d, c, b);
+        // The turning changed at a, b, c, d: every move involving an edge at one of them.
+        for x in [a, b, c, d] {
+            for y in reading.neighbours(x).into_iter().filter(|&y| y != NONE) {
+                push_moves(reading, x, y, &mut queue);
+                push_moves(reading, y, x, &mut queue);
+            }
+        }
+    }
+}
+
+/// A candidate move: replace `ab`, `cd` by `ac`, `bd`; ordered by gain, then by vertices.
+#[derive(Debug, PartialEq)]
+struct Move {
+    gain: f64,
+    a: u32,
+    b: u32,
+    c: u32,
+    d: u32,
+}
+
+impl Eq for Move {}
+
+impl PartialOrd for Move {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Move {
+    fn cmp(&self, other: &Self) -> Ordering {
+        let key = |m: &Move| [m.a, m.b, m.c, m.d];
+        self.gain.total_cmp(&other.gain).then_with(|| key(other).cmp(&key(self)))
+    }
+}
+
+/// Pushes every improving move that removes the reading edge `ab`.
+fn push_moves(reading: &Reading<'_>, a: u32, b: u32, queue: &mut BinaryHeap<Move>) {
+    let dt = reading.dt;
+    for h in dt.incident(a) {
+        let c = dt.other(h, a);
+        if c == b || reading.joined(a, c) {
+            continue;
+        }
+        for d in reading.neighbours(c) {
+            if d == NONE || d == a || d == b || reading.joined(b, d) || !dt.has_edge(b, d) {
+                continue;
+            }
+            if !respects_spacing(reading, a, b, c, d) {
+                continue;
+            }
+            let gain = gain_of(reading, a, b, c, d);
+            if gain > MIN_GAIN {
+                queue.push(Move { gain, a, b, c, d });
+            }
+        }
+    }
+}
+
+/// How much the move lowers the turning at its four vertices.
+fn gain_of(reading: &Reading<'_>, a: u32, b: u32, c: u32, d: u32) -> f64 {
+    let after = |v: u32, old: u32, new: u32| {
+        let [x, y] = reading.neighbours(v);
+        reading.turning_with(v, if x == old { [new, y] } else { [x, new] })
+    };
+    let before: f64 = [a, b, c, d].iter().map(|&v| reading.turning(v)).sum();
+    before - (after(a, b, c) + after(b, a, d) + after(c, d, a) + after(d, c, b))
+}
+
+/// Whether both new edges satisfy `u < 2` against the other edge at each of their ends.
+fn respects_spacing(reading: &Reading<'_>, a: u32, b: u32, c: u32, d: u32) -> bool {
+    let fits = |v: u32, old: u32, new: u32| match reading.other(v, old) {
+        NONE => true,
+        other => u_below_2(reading.length(v, new), reading.length(v, other)),
+    };
+    fits(a, b, c) && fits(c, d, a) && fits(b, a, d) && fits(d, c, b)
+}

@@ -1,0 +1,242 @@
+//! SIG-AUTO's outlier rule: a point is a sample of no curve when it lies farther from the
+//! curve than the curve's sample spacing there.
+//!
+//! Noise moves a sample off its curve by less than the spacing of the samples (that is what
+//! separates noise from outliers), so a point farther away than the spacing cannot be a
+//! noisy sample. "The curve" near a point is what the reconstruction says it is: the segments
+//! at the place where the point is attached, and their straight continuations (tangent
+//! rays). The rays matter at sharp corners: a sampled corner lies on the continuation of
+//! its two sides however far it is from the chord between its neighbours, so it is never
+//! taken for an outlier. The rule is applied twice:
+//!
+//! 1. [`branch_outliers`], on a component's minimum spanning tree: a *branch* hanging off
+//!    the tree's main path (its longest path) is left out when every one of its vertices is
+//!    farther than the spacing at the attachment vertex `a` (the longer of the path edges
+//!    at `a`) from those path edges and their continuations beyond `a`. A branch with one
+//!    vertex near the curve (a noisy sample, a corner, a cusp, the near end of another
+//!    curve) is kept whole.
+//! 2. [`detour_outliers`], on the reading: a *detour* is a run of vertices between two
+//!    reading vertices `a` and `b` that are joined by a Delaunay edge. It is cut out, and
+//!    `ab` joined, when every run vertex is farther than the spacing (the longest of `ab`
+//!    and the reading edges beyond `a` and `b`) from `ab` and from the continuations of
+//!    the reading beyond `a` and `b`, and when `ab` continues the reading as a sampled curve
+//!    would: `u < 2` between `ab` and the edges beyond, and at the vertices beyond.
+//!
+//! # Complexity
+//! Branches: O(k) per component of `k` points. Detours: each walk from `a` stops at the
+//! first vertex within the spacing, so O(n · degree) per pass over the reading on curve
+//! input; a cut shortens the reading, so at most `n` cuts.
+use super::reading::{Reading, NONE};
+use crate::delaunay::Triangulation;
+use crate::geometry::{distance, ray_distance, segment_distance};
+use crate::proximity::sigdt::TIE_SLACK;
+use std::collections::HashMap;
+
+/// The vertices of `vertices` (one component of `dt`, a tree with adjacency `neighbours`)
+/// that lie on branches far from the tree's main path (rule 1 of the module docs).
+pub(crate) fn branch_outliers(
+    dt: &Triangulation,
+    vertices: &[u32],
+    neighbours: impl Fn(u32) -> Vec<u32>,
+) -> Vec<u32> {
+    let path = main_path(dt, vertices, &neighbours);
+    let position: HashMap<u32, usize> = path.iter().enumerate().map(|(i, &v)| (v, i)).collect();
+    let mut in_branch = vec![false; dt.num_vertices()];
+    let mut outliers = Vec::new();
+    for &start in vertices.iter().filter(|v| !position.contains_key(v)) {
+        if std::mem::replace(&mut in_branch[start as usize], true) {
+            continue;
+        }
+        let (mut members, mut anchor) = (vec![start], None);
+        let mut k = 0;
+        while k < members.len() {
+            for w in neighbours(members[k]) {
+                if let Some(&i) = position.get(&w) {
+                    anchor = Some(i);
+                } else if !std::mem::replace(&mut in_branch[w as usize], true) {
+                    members.push(w);
+                }
+            }
+            k += 1;
+        }
+        let Some(i) = anchor else { continue };
+        let a = path[i];
+        let sides: Vec<u32> =
+            [i.wrapping_sub(1), i + 1].into_iter().filter_map(|j| path.get(j).copied()).collect();
+        let spacing = sides.iter().map(|&s| distance(dt.point(a), dt.point(s))).fold(0.0, f64::max);
+        // Distance from a member to the path edges at `a` and their continuations.
+        let off = |o: u32| {
+            let (q, pa) = (dt.point(o), dt.point(a));
+            let near = sides.iter().map(|&s| {
+                let ps = dt.point(s);
+                segment_distance(q, pa, ps).min(ray_distance(q, ps, pa))
+            });
+            near.fold(distance(q, pa), f64::min)
+        };
+        let nearest = members.iter().map(|&o| off(o)).fold(f64::INFINITY, f64::min);
+        let inner = longest_inner_edge(dt, &members, &neighbours);
+        if spacing > 0.0
+            && nearest > spacing * (1.0 + TIE_SLACK)
+            && !own_curve(members.len(), inner, nearest)
+        {
+            outliers.extend(members);
+        }
+    }
+    outliers.sort_unstable();
+    outliers
+}
+
+/// The longest tree edge between two members of a branch (0 for a single vertex).
+fn longest_inner_edge(
+    dt: &Triangulation,
+    members: &[u32],
+    neighbours: &impl Fn(u32) -> Vec<u32>,
+) -> f64 {
+    let mut inner = 0.0f64;
+    for &v in members {
+        for w in neighbours(v).into_iter().filter(|w| members.contains(w)) {
+            inner = inner.max(distance(dt.point(v), dt.point(w)));
+        }
+    }
+    inner
+}
+
+/// Whether `count` points that lie at least `off` from the curve, joined among themselves by
+/// edges at most `inner` long, are a curve of their own rather than outliers: at least three
+/// points (a curve needs three samples to have a direction), closer to one another than to
+/// the curve. (Outliers lie apart from each other as well as from the curve.)
+fn own_curve(count: usize, inner: f64, off: f64) -> bool {
+    count >= 3 && inner < off
+}
+
+/// The longest path of the tree, by length: from the vertex farthest from `vertices[0]` to
+/// the vertex farthest from it.
+fn main_path(
+    dt: &Triangulation,
+    vertices: &[u32],
+    neighbours: &impl Fn(u32) -> Vec<u32>,
+) -> Vec<u32> {
+    let farthest = |from: u32| {
+        let mut best = (0.0, from);
+        let mut parent = HashMap::from([(from, NONE)]);
+        let mut stack = vec![(from, 0.0)];
+        while let Some((v, d)) = stack.pop() {
+            if d > best.0 {
+                best = (d, v);
+            }
+            for w in neighbours(v) {
+                if let std::collections::hash_map::Entry::Vacant(slot) = parent.entry(w) {
+                    slot.insert(v);
+                    stack.push((w, d + distance(dt.point(v), dt.point(w))));
+                }
+            }
+        }
+        (best.1, parent)
+    };
+    let (x, _) = farthest(vertices[0]);
+    let (y, parent) = farthest(x);
+    let mut path = vec![y];
+    while let Some(&p) = path.last().and_then(|v| parent.get(v)) {
+        if p == NONE {
+            break;
+        }
+        path.push(p);
+    }
+    path
+}
+
+/// Cuts every detour of the reading (rule 2 of the module docs), farthest first, and
+/// returns the vertices cut out.
+pub(crate) fn detour_outliers(reading: &mut Reading<'_>) -> Vec<u32> {
+    let dt = reading.dt;
+    let mut outliers = Vec::new();
+    loop {
+        let mut best: Option<(f64, u32, u32, Vec<u32>)> = None;
+        for a in (0..dt.num_vertices() as u32).filter(|&a| reading.degree(a) == 2) {
+            for h in dt.incident(a) {
+                let b = dt.other(h, a);
+                if reading.degree(b) != 2 || reading.joined(a, b) {
+                    continue;
+                }
+                for first in reading.neighbours(a) {
+                    if let Some((margin, run)) = detour(reading, a, first, b) {
+                        if best.as_ref().map_or(true, |x| margin > x.0) {
+                            best = Some((margin, a, b, run));
+                        }
+                    }
+                }
+            }
+        }
+        let Some((_, a, b, run)) = best else { break };
+        let (first, last) = (run[0], run[run.len() - 1]);
+        reading.relink(a, first, b);
+        reading.relink(b, last, a);
+        for &o in &run {
+            reading.detach(o);
+        }
+        outliers.extend(run);
+    }
+    outliers.sort_unstable();
+    outliers
+}
+
+/// The run from `a` through `first` to `b`, and by how much its nearest vertex exceeds the
+/// spacing (a ratio above 1), if it is a detour.
+fn detour(reading: &Reading<'_>, a: u32, first: u32, b: u32) -> Option<(f64, Vec<u32>)> {
+    let a_beyond = reading.other(a, first);
+    if a_beyond == NONE || a_beyond == b {
+        return None;
+    }
+    let (pa, pb, pa_beyond) = (reading.point(a), reading.point(b), reading.point(a_beyond));
+    let (ab, a_side) = (reading.length(a, b), reading.length(a, a_beyond));
+    // Distance from a run vertex to the shortcut and to the continuation beyond `a`; a vertex
+    // within the spacing known so far ends the walk, as it could never be cut out.
+    let near_a = |v: u32| {
+        let q = reading.point(v);
+        segment_distance(q, pa, pb).min(ray_distance(q, pa_beyond, pa))
+    };
+    let mut run = Vec::new();
+    let (mut previous, mut v) = (a, first);
+    while v != b {
+        if v == NONE || v == a || near_a(v) <= ab.max(a_side) {
+            return None;
+        }
+        run.push(v);
+        let next = reading.other(v, previous);
+        (previous, v) = (v, next);
+    }
+    let b_beyond = reading.other(b, previous);
+    if run.is_empty() || b_beyond == NONE || b_beyond == a {
+        return None;
+    }
+    let b_side = reading.length(b, b_beyond);
+    let regular = |v: u32| match reading.neighbours(v) {
+        [x, y] if x != NONE && y != NONE => u_below_2(reading.length(v, x), reading.length(v, y)),
+        _ => true,
+    };
+    let continues =
+        u_below_2(ab, a_side) && u_below_2(ab, b_side) && regular(a_beyond) && regular(b_beyond);
+    let spacing = ab.max(a_side).max(b_side);
+    let pb_beyond = reading.point(b_beyond);
+    let nearest = run
+        .iter()
+        .map(|&o| near_a(o).min(ray_distance(reading.point(o), pb_beyond, pb)))
+        .fold(f64::INFINITY, f64::min);
+    let inner = run.windows(2).map(|w| reading.length(w[0], w[1])).fold(0.0, f64::max);
+    // Along the reading, a run with u < 2 at every inner vertex is sampled like a curve.
+    let regular = run.len() >= 3
+        && run
+            .windows(3)
+            .all(|w| u_below_2(reading.length(w[0], w[1]), reading.length(w[1], w[2])));
+    (continues
+        && nearest > spacing * (1.0 + TIE_SLACK)
+        && !own_curve(run.len(), inner, nearest)
+        && !regular)
+        .then(|| (nearest / spacing, run))
+}
+
+/// The non-uniformity condition of [MOW22] Theorem 1 for two edges at one sample: the longer
+/// is less than twice the shorter (ties allowed, as everywhere in SIG-AUTO).
+pub(crate) fn u_below_2(l1: f64, l2: f64) -> bool {
+    l1.max(l2) <= 2.0 * l1.min(l2) * (1.0 + TIE_SLACK)
+}

@@ -1,0 +1,104 @@
+//! A reading of the points: loops and open paths as two neighbour slots per vertex, the form
+//! SIG-AUTO's last two passes ([`outliers`](super::outliers) and
+//! [`continuation`](super::continuation)) edit. Every vertex has at most two neighbours;
+//! an end of a path has one, a point on no curve none.
+use crate::delaunay::Triangulation;
+use crate::geometry::{distance, turning, Point};
+
+/// No neighbour in a slot.
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// Loops and paths over the vertices of a triangulation.
+pub(crate) struct Reading<'a> {
+    pub(crate) dt: &'a Triangulation,
+    neighbours: Vec<[u32; 2]>,
+}
+
+impl<'a> Reading<'a> {
+    /// The reading of `pairs` (vertex pairs of `dt`, every vertex in at most two, no repeats).
+    pub(crate) fn new(dt: &'a Triangulation, pairs: &[[u32; 2]]) -> Reading<'a> {
+        let mut neighbours = vec![[NONE; 2]; dt.num_vertices()];
+        for &[a, b] in pairs {
+            for (x, y) in [(a, b), (b, a)] {
+                let slots = &mut neighbours[x as usize];
+                let free = usize::from(slots[0] != NONE);
+                debug_assert!(slots[free] == NONE, "vertex {x} on three reading edges");
+                slots[free] = y;
+            }
+        }
+        Reading { dt, neighbours }
+    }
+
+    /// The edges, each once as `[a, b]` with `a < b`, by vertex.
+    pub(crate) fn pairs(&self) -> Vec<[u32; 2]> {
+        let mut pairs = Vec::new();
+        for (a, slots) in self.neighbours.iter().enumerate() {
+            let a = a as u32;
+            pairs.extend(slots.iter().filter(|&&b| b != NONE && a < b).map(|&b| [a, b]));
+        }
+        pairs
+    }
+
+    /// The two neighbour slots of `v`.
+    pub(crate) fn neighbours(&self, v: u32) -> [u32; 2] {
+        self.neighbours[v as usize]
+    }
+
+    /// The number of reading edges at `v`.
+    pub(crate) fn degree(&self, v: u32) -> usize {
+        self.neighbours(v).iter().filter(|&&w| w != NONE).count()
+    }
+
+    /// Whether `a` and `b` are joined in the reading.
+    pub(crate) fn joined(&self, a: u32, b: u32) -> bool {
+        self.neighbours(a).contains(&b)
+    }
+
+    /// The neighbour of `v` other than `w` ([`NONE`] if there is none).
+    pub(crate) fn other(&self, v: u32, w: u32) -> u32 {
+        let [x, y] = self.neighbours(v);
+        if x == w {
+            y
+        } else {
+            x
+        }
+    }
+
+    /// Replaces the neighbour `old` of `v` by `new` ([`NONE`] to drop it).
+    pub(crate) fn relink(&mut self, v: u32, old: u32, new: u32) {
+        let slots = &mut self.neighbours[v as usize];
+        let k = usize::from(slots[0] != old);
+        debug_assert_eq!(slots[k], old, "{old} is not a neighbour of {v}");
+        slots[k] = new;
+    }
+
+    /// Takes `v` off the reading (its neighbours keep their other links).
+    pub(crate) fn detach(&mut self, v: u32) {
+        self.neighbours[v as usize] = [NONE; 2];
+    }
+
+    /// The position of vertex `v` (scaled coordinates).
+    pub(crate) fn point(&self, v: u32) -> Point {
+        self.dt.point(v)
+    }
+
+    /// The length of the segment `ab`.
+    pub(crate) fn length(&self, a: u32, b: u32) -> f64 {
+        distance(self.point(a), self.point(b))
+    }
+
+    /// How much the reading turns at `v` if its neighbours were `slots` (0 at an end).
+    pub(crate) fn turning_with(&self, v: u32, slots: [u32; 2]) -> f64 {
+        match slots {
+            [x, y] if x != NONE && y != NONE => {
+                turning(self.point(x), self.point(v), self.point(y))
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// How much the reading turns at `v` (0 at an end).
+    pub(crate) fn turning(&self, v: u32) -> f64 {
+        self.turning_with(v, self.neighbours(v))
+    }
+}
