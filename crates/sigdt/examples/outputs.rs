@@ -9,15 +9,27 @@
 //! One line per (case, method): the case's path, the method and a 64-bit FNV-1a hash of the
 //! whole `Reconstruction` (its `Debug` text: edges, loops, paths, status, duplicates, points
 //! left out, vertices and stats), with the same hash of the Delaunay edges first. Both
-//! leaf-elimination settings of SIG-CONNECT2D are covered.
+//! leaf-elimination settings of SIG-CONNECT2D are covered. A file may stand for a folder;
+//! `--full` as the first argument prints the `Debug` text itself.
 use sigdt::{Method, Options, Triangulation};
 use std::error::Error;
 use std::io::Write;
 use std::path::PathBuf;
 
 fn main() -> Result<(), Box<dyn Error>> {
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    // `--full`: the `Debug` text itself instead of its hash.
+    let full = args.first().is_some_and(|a| a == "--full");
+    if full {
+        args.remove(0);
+    }
     let mut files: Vec<PathBuf> = Vec::new();
-    for folder in std::env::args().skip(1) {
+    for folder in args {
+        let folder = PathBuf::from(folder);
+        if folder.is_file() {
+            files.push(folder);
+            continue;
+        }
         for entry in std::fs::read_dir(&folder)? {
             let path = entry?.path();
             if path.extension().is_some_and(|e| e == "xy") {
@@ -31,7 +43,8 @@ fn main() -> Result<(), Box<dyn Error>> {
         let points = sigdt::io::read_points(path)?;
         let name = path.display();
         let dt = Triangulation::new(&points)?;
-        writeln!(out, "{name} delaunay {:016x}", fnv(&format!("{:?}", dt.edges())))?;
+        let show = |text: String| if full { text } else { format!("{:016x}", fnv(&text)) };
+        writeln!(out, "{name} delaunay {}", show(format!("{:?}", dt.edges())))?;
         let mut runs: Vec<(String, Options)> = Method::ALL
             .iter()
             .map(|&method| (method.to_string(), Options { method, ..Options::default() }))
@@ -42,7 +55,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         ));
         for (label, options) in runs {
             let rec = sigdt::reconstruct(&points, &options)?;
-            writeln!(out, "{name} {label} {:016x}", fnv(&format!("{rec:?}")))?;
+            writeln!(out, "{name} {label} {}", show(format!("{rec:?}")))?;
         }
     }
     out.flush()?;
