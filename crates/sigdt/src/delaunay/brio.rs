@@ -23,8 +23,8 @@ const HILBERT_BITS: u32 = 16;
 
 /// Reorders `indices` (indices into `points`) into BRIO order, in place.
 pub fn brio_order(points: impl Fn(u32) -> [f64; 2], indices: &mut [u32]) {
-    let extent: Vec<[f64; 2]> = indices.iter().map(|&i| points(i)).collect();
-    brio_order_within(points, indices, extent.into_iter());
+    let Some(bbox) = bounding_box(indices.iter().map(|&i| points(i))) else { return };
+    brio_order_in(points, indices, &bbox);
 }
 
 /// [`brio_order`] with the Hilbert grid laid over the bounding box of `extent` instead of
@@ -35,8 +35,16 @@ pub fn brio_order_within(
     indices: &mut [u32],
     extent: impl Iterator<Item = [f64; 2]>,
 ) {
+    let Some(bbox) = bounding_box(extent) else {
+        shuffle(indices, SEED ^ indices.len() as u64);
+        return;
+    };
+    brio_order_in(points, indices, &bbox);
+}
+
+/// Shuffles `indices`, then sorts each round along the Hilbert curve over `bbox`.
+fn brio_order_in(points: impl Fn(u32) -> [f64; 2], indices: &mut [u32], bbox: &BoundingBox) {
     shuffle(indices, SEED ^ indices.len() as u64);
-    let Some(bbox) = bounding_box(extent) else { return };
     let mut keyed: Vec<u64> = Vec::with_capacity(indices.len());
     let mut end = indices.len();
     while end > 0 {
@@ -45,7 +53,7 @@ pub fn brio_order_within(
         keyed.extend(
             indices[start..end]
                 .iter()
-                .map(|&i| (u64::from(hilbert_key(points(i), &bbox)) << 32) | u64::from(i)),
+                .map(|&i| (u64::from(hilbert_key(points(i), bbox)) << 32) | u64::from(i)),
         );
         keyed.sort_unstable();
         for (slot, k) in indices[start..end].iter_mut().zip(&keyed) {

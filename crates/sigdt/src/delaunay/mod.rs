@@ -23,6 +23,7 @@
 pub(crate) mod brio;
 mod build;
 pub(crate) mod hygiene;
+mod incremental;
 
 use crate::geometry::Edge;
 use crate::geometry::{distance, Point};
