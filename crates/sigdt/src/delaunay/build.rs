@@ -85,7 +85,7 @@ fn proper(input: &[Point], scaling: Scaling, seed: [u32; 3]) -> Result<Triangula
     order.extend((0..n as u32).filter(|i| !seed.contains(i)));
     brio_order(|i| scaling.apply(input[i as usize]), &mut order[3..]);
     // Reorder once: the points in insertion order, read sequentially from here on.
-    let points: Vec<Point> = order.iter().map(|&i| scaling.apply(input[i as usize])).collect();
+    let points = crate::parallel::map_slice(&order, |&i| scaling.apply(input[i as usize]));
     let mut dt = Dt::new(points);
     // `order` becomes `input_index` in place: vertex `v` is written at `v <= k`.
     let mut input_index = order;
