@@ -9,6 +9,15 @@
 #[cfg(feature = "parallel")]
 const MIN_PARALLEL: usize = 1 << 14;
 
+/// Whether loops here may use more than one thread (the current pool has several). Passes
+/// with a cheaper sequential form use it only then; both forms give the same result.
+pub(crate) fn is_parallel() -> bool {
+    #[cfg(feature = "parallel")]
+    return rayon::current_num_threads() > 1;
+    #[cfg(not(feature = "parallel"))]
+    false
+}
+
 /// `(0..n).map(f).collect()`.
 pub(crate) fn map_range<T: Send>(n: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
     #[cfg(feature = "parallel")]

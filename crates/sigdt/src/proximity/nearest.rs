@@ -38,9 +38,23 @@ pub(crate) fn nearest_vertex_distances(dt: &Triangulation) -> Vec<f64> {
 
 /// Per vertex: the squared distance to its nearest other vertex and that vertex (ties to the
 /// first edge in [`Triangulation::edge_halfedges`] order), `(∞, EMPTY)` for a lone point.
-/// Each vertex scans its own star, in parallel.
+/// On several threads each vertex scans its own star, in parallel; on one, a single pass over
+/// the edges is cheaper. Both keep, among the nearest, the edge first in that order.
 fn nearest(dt: &Triangulation) -> Vec<(f64, u32)> {
     match dt.shape() {
+        Shape::Proper if !crate::parallel::is_parallel() => {
+            let mut r = vec![(f64::INFINITY, EMPTY); dt.num_vertices()];
+            for h in dt.edge_halfedges() {
+                let (a, b) = (dt.origin(h), dt.dest(h));
+                let len2 = squared_distance(dt.point(a), dt.point(b));
+                for (x, y) in [(a, b), (b, a)] {
+                    if len2 < r[x as usize].0 {
+                        r[x as usize] = (len2, y);
+                    }
+                }
+            }
+            r
+        }
         Shape::Proper => crate::parallel::map_range(dt.num_vertices(), |v| {
             let v = v as u32;
             // (squared length, other end, the edge's representative half-edge)
