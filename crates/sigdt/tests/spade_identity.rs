@@ -63,7 +63,8 @@ fn op() -> impl Strategy<Value = Op> {
         4 => (-6i8..6, -6i8..6).prop_map(|(x, y)| Op::Integer(x, y)),
         2 => any::<usize>().prop_map(Op::Duplicate),
         2 => (any::<usize>(), any::<usize>(), -8i8..8).prop_map(|(a, b, k)| Op::OnLine(a, b, k)),
-        2 => (0u8..3, any::<u8>(), -3i8..3, -3i8..3).prop_map(|(r, k, x, y)| Op::Circle(r, k, x, y)),
+        2 => (0u8..3, any::<u8>(), -3i8..3, -3i8..3)
+            .prop_map(|(r, k, x, y)| Op::Circle(r, k, x, y)),
         1 => (3u8..40, 0.1f64..10.0).prop_map(|(k, r)| Op::Polygon(k, r)),
         1 => (1u8..8, 1u8..8).prop_map(|(w, h)| Op::Grid(w, h)),
     ]
