@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test lint rust-test doc bench bench-python report pictures clean py-build py-test py-lint
+.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -78,9 +78,22 @@ rust-test:
 doc:
 	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps --workspace
 
-## bench: the speed table (Delaunay vs total time, peak heap) at 1e3..1e6 points.
-bench:
-	$(CARGO) run --release --locked -p sigdt --example speed
+## bench: the speed tables (make bench SIZES=1e5,1e6,1e7 for the large sizes): Delaunay,
+## total, CGAL (when libcgal-dev is installed), memory per point, one thread against two;
+## then the whole `sigdt reconstruct` process against CGAL's.
+SIZES ?= 1e3,1e4,1e5,1e6
+CGAL_TOOL := $(TARGET_DIR)/cgal-delaunay
+bench: build
+	@if [ -f /usr/include/CGAL/Delaunay_triangulation_2.h ]; then $(MAKE) --no-print-directory cgal-delaunay; \
+	else echo "libcgal-dev is not installed: no CGAL column (apt-get install -y --no-install-recommends libcgal-dev)"; fi
+	$(CARGO) run --release --locked -p sigdt --example speed -- --sizes $(SIZES) \
+	  --cgal $(CGAL_TOOL) --cli $(SIGDT)
+
+## cgal-delaunay: the bench-only CGAL baseline (GPL-3, tools/cgal-delaunay/; needs libcgal-dev).
+cgal-delaunay: $(CGAL_TOOL)
+$(CGAL_TOOL): tools/cgal-delaunay/main.cpp
+	@mkdir -p $(TARGET_DIR)
+	g++ -O3 -DNDEBUG -std=c++17 $< -o $@ -lgmp -lmpfr
 
 ## bench-python: Python-call overhead at 1e5 points and reconstruct_many throughput.
 bench-python: py-build build

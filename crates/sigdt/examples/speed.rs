@@ -1,40 +1,54 @@
-//! Speed benchmark: the Delaunay step against the whole SIG-CONNECT2D pipeline, plus memory.
+//! Speed benchmark: SIG-CONNECT2D against its own Delaunay step and against CGAL, memory,
+//! and scaling to two threads.
 //!
 //! ```text
-//! cargo run --release -p sigdt --example speed                       # n = 1e3, 1e4, 1e5, 1e6
-//! cargo run --release -p sigdt --example speed -- --sizes 1000,1e4 --reps 5
+//! cargo run --release -p sigdt --example speed                       # n = 1e3 .. 1e6
+//! cargo run --release -p sigdt --example speed -- --sizes 1e5,1e6,1e7 --reps 3 \
+//!     --cgal target/cgal-delaunay --cli target/release/sigdt
 //! ```
 //!
 //! Inputs: `closed-curve` is [`random_closed_curve`]`(1, n)`, a smooth 12-harmonic blob
 //! sampled uniformly; `spiral-band` is [`spiral_band`]`(n)`, a long thin coiled band (the hard
-//! case for Delaunay insertion order). Both are shuffled with seed 7, so the input order
-//! carries no curve order. A Markdown table goes to stdout, progress to stderr. Columns:
+//! case for Delaunay insertion order). Each comes `shuffled` (seed 7: the input order
+//! carries no curve order) and in `curve` order. Markdown tables go to stdout, progress to
+//! stderr.
 //!
-//! - `input`, `n`: the input and its number of points.
-//! - `Delaunay ms`: median wall time of [`Triangulation::new`] (validation, deduplication,
-//!   insertion order, triangulation).
-//! - `total ms`: median wall time of [`sigdt::reconstruct`] with default options, which
-//!   builds its own triangulation.
-//! - `total/Delaunay`: ratio of the two medians: how much the pipeline adds to the Delaunay step.
-//! - `ns/point (total)`: `total ms` per input point.
-//! - `peak MiB`, `peak bytes/point`: peak memory of one `reconstruct` call beyond what the
-//!   process held just before it (so the input points are excluded).
-//! - `exact`: whether the reconstructed edges equal the ground-truth cycle.
+//! **In process** (one row per input, order and size):
+//! - `Delaunay ms`: median wall time of [`Triangulation::new`] on one thread.
+//! - `total ms`: median wall time of [`sigdt::reconstruct`] (default options, which builds its
+//!   own triangulation) on one thread; `total/Delaunay` their ratio.
+//! - `CGAL ms`: median time of a bare CGAL 2D Delaunay triangulation of the same points
+//!   (`Delaunay_triangulation_2`, Epick, range insert with its spatial sort), measured inside
+//!   the external tool `tools/cgal-delaunay` (`--cgal PATH`; the column says `n/a` without it);
+//!   `total/CGAL` is `total ms` over it.
+//! - `ns/point`: `total ms` per point.
+//! - `T threads ms`, `speed-up`: `reconstruct` on a pool of `T` threads (`--threads T`,
+//!   default: the available parallelism) and the one-thread time over it. Every result is
+//!   checked to equal the one-thread result.
+//! - `peak bytes/point`: heap high-water mark of one one-thread `reconstruct` call beyond
+//!   what the process held before it (the input points excluded), counted exactly by a
+//!   pass-through allocator.
+//! - `exact`: whether the edges equal the ground-truth cycle.
 //!
-//! Timing: after one warm-up run of each, the two calls alternate `R` times (so machine noise
-//! hits both alike) and the medians are reported. By default `R` is the smallest count that
-//! makes each measurement last at least 0.3 s, clamped to `3..=50`; `--reps R` fixes it. Every
-//! run is single-threaded.
+//! Timing: after one warm-up, the calls alternate `R` times (so machine noise hits all of
+//! them alike), the CGAL tool running once per round; medians are reported. By default `R`
+//! is the smallest count that makes each measurement last at least 0.3 s, clamped to
+//! `3..=50`; `--reps R` fixes it.
 //!
-//! Memory: exact heap bytes, counted by a pass-through `#[global_allocator]`: the peak
-//! during one `reconstruct` call minus what was allocated just before it (the result
-//! returned by the call is included).
+//! **Whole process** (with `--cli PATH`, the `sigdt` binary, for `n >= 1e5`): the points are
+//! written to a temporary file; `sigdt reconstruct FILE -o OUT` with one thread
+//! (`RAYON_NUM_THREADS=1`) and with `T`, and `cgal-delaunay FILE` (read and triangulate) run
+//! in turn `R` times under `/usr/bin/time`: median wall seconds, and the peak resident memory
+//! (`%M`) per point of `sigdt reconstruct`.
+use rayon::{ThreadPool, ThreadPoolBuilder};
 use sigdt::samplers::{random_closed_curve, spiral_band, Sample};
 use sigdt::{Options, Point, Triangulation};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::error::Error;
 use std::hint::black_box;
 use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
@@ -46,85 +60,222 @@ type Sampler = fn(usize) -> Sample;
 const MIN_SECONDS: f64 = 0.3;
 const MIN_REPS: usize = 3;
 const MAX_REPS: usize = 50;
-const USAGE: &str = "usage: speed [--sizes N,N,...] [--reps R]";
+const USAGE: &str =
+    "usage: speed [--sizes N,N,...] [--reps R] [--threads T] [--cgal PATH] [--cli PATH]";
+
+struct Args {
+    sizes: Vec<usize>,
+    reps: Option<usize>,
+    threads: usize,
+    cgal: Option<PathBuf>,
+    cli: Option<PathBuf>,
+}
 
 fn main() -> Res<()> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let (sizes, reps) = parse_args(&args)?;
-    let threads = std::thread::available_parallelism().map_or(1, |p| p.get());
+    let args = parse_args(&std::env::args().skip(1).collect::<Vec<_>>())?;
     let (arch, os) = (std::env::consts::ARCH, std::env::consts::OS);
-    println!(
-        "Machine: {arch}-{os}, available parallelism {threads}; every run is single-threaded."
-    );
+    let cores = std::thread::available_parallelism().map_or(1, |p| p.get());
+    println!("Machine: {arch}-{os}, available parallelism {cores}.");
     println!();
+    let t = args.threads;
     println!(
-        "| input | n | Delaunay ms | total ms | total/Delaunay | ns/point (total) | peak MiB \
-         | peak bytes/point | exact |"
+        "| input | order | n | Delaunay ms | total ms | total/Delaunay | CGAL ms | total/CGAL \
+         | ns/point | {t} threads ms | speed-up | peak bytes/point | exact |"
     );
-    println!("|---|--:|--:|--:|--:|--:|--:|--:|:-:|");
+    println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|");
+    let one = ThreadPoolBuilder::new().num_threads(1).build()?;
+    let many = ThreadPoolBuilder::new().num_threads(t).build()?;
+    let dir = std::env::temp_dir().join(format!("sigdt-speed-{}", std::process::id()));
+    std::fs::create_dir_all(&dir)?;
+    let mut process_rows = Vec::new();
     let inputs: [(&str, Sampler); 2] =
         [("closed-curve", |n| random_closed_curve(1, n)), ("spiral-band", spiral_band)];
     for (name, make) in inputs {
-        for &n in &sizes {
+        for &n in &args.sizes {
             eprint!("{name} n={n}: sampling… ");
-            let sample = make(n).shuffled(7);
-            eprint!("timing… ");
-            let timing = measure(&sample, reps)?;
-            eprint!("{} repetitions; memory… ", timing.reps);
-            let peak = peak_memory(&sample.points)?;
-            eprintln!("done");
-            let (dt, total) = (timing.delaunay * 1e3, timing.total * 1e3);
-            let (mib, per_point) = match peak {
-                Some(bytes) => {
-                    let bytes = bytes as f64;
-                    (format!("{:.1}", bytes / 1048576.0), format!("{:.0}", bytes / n as f64))
+            let curve = make(n);
+            for (order, sample) in [("shuffled", curve.shuffled(7)), ("curve", curve.clone())] {
+                let file = dir.join(format!("{name}-{order}-{n}.xy"));
+                let needs_file = args.cgal.is_some() || (args.cli.is_some() && n >= 100_000);
+                if needs_file {
+                    write_points(&file, &sample.points)?;
                 }
-                None => ("n/a".to_string(), "n/a".to_string()),
-            };
-            println!(
-                "| {name} | {n} | {dt:.2} | {total:.2} | {:.2} | {:.0} | {mib} | {per_point} | {} |",
-                total / dt,
-                total * 1e6 / n as f64,
-                if timing.exact { "yes" } else { "no" },
-            );
-            std::io::stdout().flush()?;
+                eprint!("{order}: timing… ");
+                let cgal = args.cgal.as_deref().filter(|_| needs_file).map(|c| (c, file.as_path()));
+                let m = measure(&sample, args.reps, &one, &many, cgal)?;
+                eprint!("{} repetitions; memory… ", m.reps);
+                let peak = one.install(|| peak_memory(&sample.points))?;
+                let (dt, total, total_t) = (m.delaunay * 1e3, m.total * 1e3, m.total_many * 1e3);
+                let cgal_ms = m.cgal.map(|c| c * 1e3);
+                println!(
+                    "| {name} | {order} | {n} | {dt:.2} | {total:.2} | {:.2} | {} | {} | {:.0} \
+                     | {total_t:.2} | {:.2} | {:.0} | {} |",
+                    total / dt,
+                    cgal_ms.map_or("n/a".into(), |c| format!("{c:.2}")),
+                    cgal_ms.map_or("n/a".into(), |c| format!("{:.2}", total / c)),
+                    total * 1e6 / n as f64,
+                    total / total_t,
+                    peak as f64 / n as f64,
+                    if m.exact { "yes" } else { "no" },
+                );
+                std::io::stdout().flush()?;
+                if let Some(cli) = args.cli.as_deref().filter(|_| n >= 100_000) {
+                    eprint!("whole process… ");
+                    let row = whole_process(cli, args.cgal.as_deref(), &file, n, t, &args, &dir)?;
+                    process_rows.push(format!("| {name} | {order} | {n} | {row}"));
+                }
+                if needs_file {
+                    std::fs::remove_file(&file)?;
+                }
+                eprintln!("done");
+            }
         }
     }
+    if !process_rows.is_empty() {
+        println!();
+        println!(
+            "| input | order | n | `sigdt reconstruct` s, 1 thread | {t} threads s | speed-up \
+             | `cgal-delaunay` s | sigdt (1 thread) / CGAL | peak RSS bytes/point |"
+        );
+        println!("|---|---|--:|--:|--:|--:|--:|--:|--:|");
+        for row in process_rows {
+            println!("{row}");
+        }
+    }
+    std::fs::remove_dir_all(&dir)?;
     Ok(())
 }
 
 /// Median times in seconds, the number of repetitions, and whether the output was exact.
-struct Timing {
+struct Measured {
     delaunay: f64,
     total: f64,
+    total_many: f64,
+    cgal: Option<f64>,
     reps: usize,
     exact: bool,
 }
 
-/// Times `Triangulation::new` and `reconstruct` on the sample's points, interleaved.
-fn measure(sample: &Sample, reps: Option<usize>) -> Res<Timing> {
+/// Times `Triangulation::new` and `reconstruct` (one thread and many) on the sample's
+/// points, and the CGAL tool on their file, interleaved.
+fn measure(
+    sample: &Sample,
+    reps: Option<usize>,
+    one: &ThreadPool,
+    many: &ThreadPool,
+    cgal: Option<(&Path, &Path)>,
+) -> Res<Measured> {
     let points = &sample.points[..];
     let options = Options::default();
+    let delaunay = || one.install(|| time(|| Triangulation::new(points)));
+    let total = |pool: &ThreadPool| pool.install(|| time(|| sigdt::reconstruct(points, &options)));
     // Warm-up: also checks the output and sizes the number of repetitions.
-    let (first_dt, dt) = time(|| Triangulation::new(points))?;
+    let (first_dt, dt) = delaunay()?;
     drop(dt);
-    let (first_total, rec) = time(|| sigdt::reconstruct(points, &options))?;
+    let (first_total, rec) = total(one)?;
     let exact = rec.edges == sample.edges;
-    drop(rec);
     let reps = reps.unwrap_or_else(|| {
         let needed = (MIN_SECONDS / first_dt.min(first_total)).ceil();
         (needed.min(MAX_REPS as f64) as usize).max(MIN_REPS)
     });
-    let (mut dts, mut totals) = (Vec::with_capacity(reps), Vec::with_capacity(reps));
+    let (mut dts, mut totals, mut manys, mut cgals) = (vec![], vec![], vec![], vec![]);
     for _ in 0..reps {
-        let (t, dt) = time(|| Triangulation::new(points))?;
+        let (t, dt) = delaunay()?;
         dts.push(t);
         drop(dt); // dropped outside the timed region
-        let (t, rec) = time(|| sigdt::reconstruct(points, &options))?;
+        let (t, r) = total(one)?;
         totals.push(t);
-        drop(rec);
+        drop(r);
+        let (t, r) = total(many)?;
+        manys.push(t);
+        if r != rec {
+            return Err("the result on several threads differs from the one-thread result".into());
+        }
+        drop(r);
+        if let Some((tool, file)) = cgal {
+            cgals.push(cgal_time(tool, file)?);
+        }
     }
-    Ok(Timing { delaunay: median(&mut dts), total: median(&mut totals), reps, exact })
+    Ok(Measured {
+        delaunay: median(&mut dts),
+        total: median(&mut totals),
+        total_many: median(&mut manys),
+        cgal: (!cgals.is_empty()).then(|| median(&mut cgals)),
+        reps,
+        exact,
+    })
+}
+
+/// The triangulation time (seconds) that `cgal-delaunay FILE` reports.
+fn cgal_time(tool: &Path, file: &Path) -> Res<f64> {
+    let out = Command::new(tool).arg(file).output()?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let ms = text
+        .split_whitespace()
+        .find_map(|w| w.strip_prefix("ms="))
+        .ok_or_else(|| format!("{}: unexpected output {text:?}", tool.display()))?;
+    Ok(ms.parse::<f64>()? / 1e3)
+}
+
+/// One row of the whole-process table: `sigdt reconstruct` on one and `t` threads and
+/// `cgal-delaunay`, in turn, under `/usr/bin/time`.
+fn whole_process(
+    cli: &Path,
+    cgal: Option<&Path>,
+    file: &Path,
+    n: usize,
+    t: usize,
+    args: &Args,
+    dir: &Path,
+) -> Res<String> {
+    let out = dir.join("out.edges");
+    let run = |program: &Path, threads: usize, reconstruct: bool| -> Res<(f64, f64)> {
+        let mut cmd = Command::new("/usr/bin/time");
+        cmd.args(["-f", "%e %M"]).arg(program).env("RAYON_NUM_THREADS", threads.to_string());
+        if reconstruct {
+            cmd.arg("reconstruct").arg(file).arg("-o").arg(&out);
+        } else {
+            cmd.arg(file);
+        }
+        let o = cmd.output()?;
+        let text = String::from_utf8_lossy(&o.stderr);
+        let last = text.lines().last().unwrap_or_default();
+        let mut it = last.split_whitespace().map(str::parse::<f64>);
+        match (it.next(), it.next()) {
+            (Some(Ok(s)), Some(Ok(kb))) if o.status.success() => Ok((s, kb * 1024.0)),
+            _ => Err(format!("{}: failed: {text}", program.display()).into()),
+        }
+    };
+    let reps = args.reps.unwrap_or(MIN_REPS);
+    let (mut ones, mut manys, mut cgals, mut rss) = (vec![], vec![], vec![], vec![]);
+    for _ in 0..reps {
+        let (s, bytes) = run(cli, 1, true)?;
+        ones.push(s);
+        rss.push(bytes);
+        manys.push(run(cli, t, true)?.0);
+        if let Some(c) = cgal {
+            cgals.push(run(c, 1, false)?.0);
+        }
+    }
+    let (one, many, peak) = (median(&mut ones), median(&mut manys), median(&mut rss));
+    let cgal = (!cgals.is_empty()).then(|| median(&mut cgals));
+    Ok(format!(
+        "{one:.2} | {many:.2} | {:.2} | {} | {} | {:.0} |",
+        one / many,
+        cgal.map_or("n/a".into(), |c| format!("{c:.2}")),
+        cgal.map_or("n/a".into(), |c| format!("{:.2}", one / c)),
+        peak / n as f64
+    ))
+}
+
+/// Writes `points` as `x y` lines (shortest round-trip decimal form).
+fn write_points(path: &Path, points: &[Point]) -> Res<()> {
+    let mut w = std::io::BufWriter::new(std::fs::File::create(path)?);
+    for p in points {
+        writeln!(w, "{} {}", p[0], p[1])?;
+    }
+    w.flush()?;
+    Ok(())
 }
 
 /// Wall time of `f` in seconds, and its result (to be dropped by the caller, untimed).
@@ -146,14 +297,14 @@ fn median(values: &mut [f64]) -> f64 {
 
 /// Peak heap bytes of one `reconstruct` run on `points`, beyond what was allocated before
 /// the call (the input points are excluded; the returned result is included).
-fn peak_memory(points: &[Point]) -> Res<Option<u64>> {
+fn peak_memory(points: &[Point]) -> sigdt::Result<usize> {
     let options = Options::default();
     let baseline = CURRENT.load(Ordering::SeqCst);
     PEAK.store(baseline, Ordering::SeqCst);
     let rec = black_box(sigdt::reconstruct(points, &options)?);
     let peak = PEAK.load(Ordering::SeqCst);
     drop(rec);
-    Ok(Some((peak - baseline) as u64))
+    Ok(peak - baseline)
 }
 
 /// Heap bytes allocated now, and the most since the last reset.
@@ -197,22 +348,28 @@ fn grow(bytes: usize) {
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;
 
-fn parse_args(args: &[String]) -> Res<(Vec<usize>, Option<usize>)> {
-    let mut sizes = vec![1_000, 10_000, 100_000, 1_000_000];
-    let mut reps = None;
+fn parse_args(args: &[String]) -> Res<Args> {
+    let threads = std::thread::available_parallelism().map_or(1, |p| p.get()).max(2);
+    let mut out = Args {
+        sizes: vec![1_000, 10_000, 100_000, 1_000_000],
+        reps: None,
+        threads,
+        cgal: None,
+        cli: None,
+    };
     let mut it = args.iter();
     while let Some(arg) = it.next() {
-        if arg != "--sizes" && arg != "--reps" {
-            return Err(format!("unknown argument {arg:?}; {USAGE}").into());
-        }
         let value = it.next().ok_or_else(|| format!("{arg} needs a value; {USAGE}"))?;
-        if arg == "--sizes" {
-            sizes = value.split(',').map(parse_count).collect::<Res<_>>()?;
-        } else {
-            reps = Some(parse_count(value)?.max(1));
+        match arg.as_str() {
+            "--sizes" => out.sizes = value.split(',').map(parse_count).collect::<Res<_>>()?,
+            "--reps" => out.reps = Some(parse_count(value)?.max(1)),
+            "--threads" => out.threads = parse_count(value)?.max(1),
+            "--cgal" => out.cgal = Some(PathBuf::from(value)).filter(|p| p.exists()),
+            "--cli" => out.cli = Some(PathBuf::from(value)).filter(|p| p.exists()),
+            _ => return Err(format!("unknown argument {arg:?}; {USAGE}").into()),
         }
     }
-    Ok((sizes, reps))
+    Ok(out)
 }
 
 /// A non-negative integer, written plainly (`10000`) or in exponent form (`1e4`).

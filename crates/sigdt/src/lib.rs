@@ -32,6 +32,7 @@ mod graph;
 pub mod internals;
 pub mod io;
 mod method;
+mod parallel;
 pub mod proximity;
 pub mod result;
 pub mod samplers;

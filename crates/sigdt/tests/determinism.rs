@@ -100,3 +100,23 @@ fn results_do_not_depend_on_the_thread_count() {
         assert!(one[k] == four[k], "{name}, {method}: 1 and 4 threads differ");
     }
 }
+
+#[test]
+fn one_large_set_is_the_same_on_every_pool_size() {
+    // Above the size where the kernel's loops go parallel (2^14), on rayon pools of 1, 2
+    // and 3 threads: the same result, every method, bit for bit.
+    let n = scale(60_000, 20_000);
+    let sets = [random_closed_curve(5, n).shuffled(1).points, spiral_band(n).shuffled(2).points];
+    for points in &sets {
+        for &method in Method::ALL {
+            let on = |threads: usize| {
+                let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+                pool.install(|| bytes(points, method))
+            };
+            let one = on(1);
+            for threads in [2, 3] {
+                assert!(on(threads) == one, "{method}: 1 and {threads} threads differ");
+            }
+        }
+    }
+}

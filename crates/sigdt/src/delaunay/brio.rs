@@ -22,35 +22,48 @@ const MIN_ROUND: usize = 64;
 const HILBERT_BITS: u32 = 16;
 
 /// Reorders `indices` (indices into `points`) into BRIO order, in place.
-pub fn brio_order(points: impl Fn(u32) -> [f64; 2], indices: &mut [u32]) {
-    let extent: Vec<[f64; 2]> = indices.iter().map(|&i| points(i)).collect();
-    brio_order_within(points, indices, extent.into_iter());
+pub fn brio_order(points: impl Fn(u32) -> [f64; 2] + Sync + Send, indices: &mut [u32]) {
+    let Some(bbox) = bounding_box(indices.iter().map(|&i| points(i))) else { return };
+    // Keys are computed in the given order (sequential reads of the points when `indices`
+    // is ascending), then shuffled with their indices.
+    let mut keyed: Vec<u64> = crate::parallel::map_slice(indices, |&i| {
+        (u64::from(hilbert_key(points(i), &bbox)) << 32) | u64::from(i)
+    });
+    sort_rounds(&mut keyed);
+    for (slot, k) in indices.iter_mut().zip(&keyed) {
+        *slot = *k as u32;
+    }
 }
 
 /// [`brio_order`] with the Hilbert grid laid over the bounding box of `extent` instead of
 /// the points' own; points outside it (or not finite) are clamped to its border cells. CRUST
 /// uses it to order Voronoi vertices on the samples' grid, unspoilt by far-away centres.
 pub fn brio_order_within(
-    points: impl Fn(u32) -> [f64; 2],
+    points: impl Fn(u32) -> [f64; 2] + Sync + Send,
     indices: &mut [u32],
     extent: impl Iterator<Item = [f64; 2]>,
 ) {
-    shuffle(indices, SEED ^ indices.len() as u64);
-    let Some(bbox) = bounding_box(extent) else { return };
-    let mut keyed: Vec<u64> = Vec::with_capacity(indices.len());
-    let mut end = indices.len();
+    let Some(bbox) = bounding_box(extent) else {
+        shuffle(indices, SEED ^ indices.len() as u64);
+        return;
+    };
+    let mut keyed: Vec<u64> = crate::parallel::map_slice(indices, |&i| {
+        (u64::from(hilbert_key(points(i), &bbox)) << 32) | u64::from(i)
+    });
+    sort_rounds(&mut keyed);
+    for (slot, k) in indices.iter_mut().zip(&keyed) {
+        *slot = *k as u32;
+    }
+}
+
+/// Shuffles the `(key << 32) | index` values (the permutation depends on the length only),
+/// then sorts each round, from the last (largest) to the first.
+fn sort_rounds(keyed: &mut [u64]) {
+    shuffle(keyed, SEED ^ keyed.len() as u64);
+    let mut end = keyed.len();
     while end > 0 {
         let start = if end / 2 < MIN_ROUND { 0 } else { end / 2 };
-        keyed.clear();
-        keyed.extend(
-            indices[start..end]
-                .iter()
-                .map(|&i| (u64::from(hilbert_key(points(i), &bbox)) << 32) | u64::from(i)),
-        );
-        keyed.sort_unstable();
-        for (slot, k) in indices[start..end].iter_mut().zip(&keyed) {
-            *slot = *k as u32;
-        }
+        crate::parallel::sort_unstable(&mut keyed[start..end]);
         end = start;
     }
 }
@@ -109,7 +122,7 @@ fn hilbert_index(mut x: u32, mut y: u32) -> u32 {
 }
 
 /// Fisher-Yates shuffle driven by SplitMix64.
-fn shuffle(items: &mut [u32], seed: u64) {
+fn shuffle<T>(items: &mut [T], seed: u64) {
     let mut state = seed;
     for i in (1..items.len()).rev() {
         state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);

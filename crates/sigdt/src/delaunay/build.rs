@@ -1,13 +1,12 @@
-//! Building a [`Triangulation`]: hygiene, degenerate shapes, spade insertion in BRIO order,
-//! export to flat arrays.
+//! Building a [`Triangulation`]: hygiene, degenerate shapes, then the points copied once into
+//! BRIO order and inserted one by one into the flat arrays (module `incremental`).
 use super::brio::brio_order;
 use super::hygiene::Scaling;
+use super::incremental::Dt;
 use super::{Shape, Triangulation, EMPTY};
 use crate::error::{Error, Result};
 use crate::geometry::Edge;
 use crate::geometry::{orient2d, Point};
-use spade::handles::FixedVertexHandle;
-use spade::{DelaunayTriangulation, Point2, Triangulation as _};
 
 impl Triangulation {
     /// Triangulates `points` (`docs/algorithms.md` §0.1–0.2).
@@ -19,7 +18,7 @@ impl Triangulation {
         let scaling = Scaling::for_points(points)?;
         let scaled = |i: u32| scaling.apply(points[i as usize]);
         match first_triangle(points.len(), scaled) {
-            Some(seed) => proper(points, scaled, scaling, seed),
+            Some(seed) => proper(points, scaling, seed),
             None => Ok(on_a_line(points.len(), scaled)),
         }
     }
@@ -73,51 +72,41 @@ fn on_a_line(n: usize, p: impl Fn(u32) -> Point) -> Triangulation {
     }
 }
 
-fn proper(
-    input: &[Point],
-    p: impl Fn(u32) -> Point,
-    scaling: Scaling,
-    seed: [u32; 3],
-) -> Result<Triangulation> {
+fn proper(input: &[Point], scaling: Scaling, seed: [u32; 3]) -> Result<Triangulation> {
     let n = input.len();
-    let mut dt: DelaunayTriangulation<Point2<f64>> =
-        DelaunayTriangulation::with_capacity(n, 3 * n, 2 * n + 1);
-    let mut input_index: Vec<u32> = Vec::with_capacity(n);
+    // Half-edges are numbered in `u32` (`EMPTY` excluded): at most 6 per point.
+    let max = EMPTY as usize / 6;
+    if n > max {
+        return Err(Error::TooManyPoints { got: n, max });
+    }
+    // The insertion order: the seed, then the rest in BRIO order.
+    let mut order: Vec<u32> = Vec::with_capacity(n);
+    order.extend_from_slice(&seed);
+    order.extend((0..n as u32).filter(|i| !seed.contains(i)));
+    brio_order(|i| scaling.apply(input[i as usize]), &mut order[3..]);
+    // Reorder once: the points in insertion order, read sequentially from here on.
+    let points = crate::parallel::map_slice(&order, |&i| scaling.apply(input[i as usize]));
+    let mut dt = Dt::new(points);
+    // `order` becomes `input_index` in place: vertex `v` is written at `v <= k`.
+    let mut input_index = order;
     let mut later_duplicates: Vec<(u32, u32)> = Vec::new(); // (input index, vertex)
-    let mut hint = FixedVertexHandle::from_index(0);
-    let mut insert = |i: u32, dt: &mut DelaunayTriangulation<Point2<f64>>| -> Result<()> {
-        let [x, y] = p(i);
-        let before = dt.num_vertices();
-        // Unreachable after `Scaling::for_points`; reported with the caller's numbers.
-        let handle = dt.insert_with_hint(Point2::new(x, y), hint).map_err(|_| {
-            let raw = input[i as usize];
-            let value = if raw[0].abs() <= raw[1].abs() { raw[0] } else { raw[1] };
-            Error::CoordinateRange { index: i as usize, value, largest: scaling.largest() }
-        })?;
-        if dt.num_vertices() == before {
-            // Exact duplicate: keep the lowest input index as the representative.
-            let rep = &mut input_index[handle.index()];
-            later_duplicates.push((i.max(*rep), handle.index() as u32));
-            *rep = (*rep).min(i);
+    let mut hint = 0;
+    for k in 3..n {
+        let i = input_index[k];
+        let (v, new) = dt.insert(k, hint);
+        if new {
+            input_index[v as usize] = i;
         } else {
-            input_index.push(i);
+            // Exact duplicate: keep the lowest input index as the representative.
+            let rep = &mut input_index[v as usize];
+            later_duplicates.push((i.max(*rep), v));
+            *rep = (*rep).min(i);
         }
-        hint = handle;
-        Ok(())
-    };
-    for &i in &seed {
-        insert(i, &mut dt)?;
+        hint = v;
     }
-    let mut order: Vec<u32> = (0..n as u32).filter(|i| !seed.contains(i)).collect();
-    brio_order(&p, &mut order);
-    for &i in &order {
-        insert(i, &mut dt)?;
-    }
-    drop(order);
-
-    let (triangles, halfedges) = export(&dt);
-    drop(dt);
-    let points: Vec<Point> = input_index.iter().map(|&i| p(i)).collect();
+    input_index.truncate(dt.num_vertices);
+    input_index.shrink_to_fit();
+    let (points, triangles, halfedges) = dt.finish();
     let mut vertex_halfedge = vec![EMPTY; points.len()];
     for (h, &v) in triangles.iter().enumerate() {
         let slot = &mut vertex_halfedge[v as usize];
@@ -140,37 +129,6 @@ fn proper(
         input_len: n,
         shape: Shape::Proper,
     })
-}
-
-/// Spade's DCEL to `triangles` and `halfedges` arrays. Inner face `f` becomes triangle
-/// `f - 1` (face 0 is spade's outer face).
-fn export(dt: &DelaunayTriangulation<Point2<f64>>) -> (Vec<u32>, Vec<u32>) {
-    let nt = dt.num_inner_faces();
-    let mut triangles = Vec::with_capacity(3 * nt);
-    for face in dt.inner_faces() {
-        for e in face.adjacent_edges() {
-            triangles.push(e.from().fix().index() as u32);
-        }
-    }
-    let mut halfedges = vec![EMPTY; 3 * nt];
-    for (t, face) in dt.inner_faces().enumerate() {
-        debug_assert_eq!(face.fix().index(), t + 1);
-        for (k, e) in face.adjacent_edges().iter().enumerate() {
-            let h = 3 * t + k;
-            if halfedges[h] != EMPTY {
-                continue;
-            }
-            if let Some(other) = e.rev().face().as_inner() {
-                let t2 = other.fix().index() - 1;
-                let start = e.to().fix().index() as u32;
-                let k2 =
-                    (0..3).find(|&k2| triangles[3 * t2 + k2] == start).expect("twin in neighbour");
-                halfedges[h] = (3 * t2 + k2) as u32;
-                halfedges[3 * t2 + k2] = h as u32;
-            }
-        }
-    }
-    (triangles, halfedges)
 }
 
 #[cfg(test)]

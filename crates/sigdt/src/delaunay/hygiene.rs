@@ -11,6 +11,8 @@ use crate::geometry::Point;
 
 /// Smallest non-zero absolute coordinate spade accepts (2^-142).
 const MIN_ALLOWED: f64 = spade::MIN_ALLOWED_VALUE;
+/// Points per chunk of the parallel checks.
+const CHUNK: usize = 1 << 16;
 /// The largest absolute coordinate is scaled into `[2^TARGET_EXPONENT, 2^(TARGET_EXPONENT+1))`.
 const TARGET_EXPONENT: i32 = 30;
 
@@ -27,23 +29,38 @@ impl Scaling {
         if points.len() >= u32::MAX as usize {
             return Err(Error::TooManyPoints { got: points.len(), max: u32::MAX as usize - 1 });
         }
+        // Chunks are checked in parallel; the first chunk with a problem names the point.
+        let chunks = points.len().div_ceil(CHUNK);
+        let chunk = |c: usize| &points[c * CHUNK..((c + 1) * CHUNK).min(points.len())];
         let mut largest = 0.0f64;
-        for (index, &[x, y]) in points.iter().enumerate() {
-            if !x.is_finite() || !y.is_finite() {
-                return Err(Error::NonFinite { index, x, y });
+        let found = crate::parallel::map_range(chunks, |c| {
+            let mut largest = 0.0f64;
+            for (k, &[x, y]) in chunk(c).iter().enumerate() {
+                if !x.is_finite() || !y.is_finite() {
+                    return Err(Error::NonFinite { index: c * CHUNK + k, x, y });
+                }
+                largest = largest.max(x.abs()).max(y.abs());
             }
-            largest = largest.max(x.abs()).max(y.abs());
+            Ok(largest)
+        });
+        for result in found {
+            largest = largest.max(result?);
         }
         let exponent = if largest == 0.0 { 0 } else { TARGET_EXPONENT - floor_log2(largest) };
         let scaling = Scaling { exponent, largest };
-        for (index, p) in points.iter().enumerate() {
-            for (raw, c) in p.iter().zip(scaling.apply(*p)) {
-                // Judge by the raw value: a tiny coordinate may scale to exactly 0.0.
-                if *raw != 0.0 && c.abs() < MIN_ALLOWED {
-                    return Err(Error::CoordinateRange { index, value: *raw, largest });
+        let found = crate::parallel::map_range(chunks, |c| {
+            for (k, p) in chunk(c).iter().enumerate() {
+                for (raw, s) in p.iter().zip(scaling.apply(*p)) {
+                    // Judge by the raw value: a tiny coordinate may scale to exactly 0.0.
+                    if *raw != 0.0 && s.abs() < MIN_ALLOWED {
+                        let index = c * CHUNK + k;
+                        return Err(Error::CoordinateRange { index, value: *raw, largest });
+                    }
                 }
             }
-        }
+            Ok(())
+        });
+        found.into_iter().collect::<Result<()>>()?;
         Ok(scaling)
     }
 

@@ -1,7 +1,9 @@
 //! The Delaunay triangulation, seen through flat index arrays.
 //!
-//! Built with the `spade` crate (exact predicates) in BRIO order (module `brio`) and then exported
-//! to the representation every algorithm here uses (`docs/algorithms.md` §0.2):
+//! The points are copied once into BRIO order (module `brio`) and inserted one by one straight
+//! into the representation every algorithm here uses (module `incremental`, a port of
+//! spade's insertion that fills the same arrays spade's export did; `docs/algorithms.md`
+//! §0.2):
 //!
 //! - `triangles[3t..3t+3]`: the vertices of triangle `t`, counter-clockwise;
 //! - half-edge `h` runs from `triangles[h]` to `triangles[next(h)]` and has triangle `h / 3`
@@ -17,12 +19,13 @@
 //! points, give a triangulation without triangles ([`Shape`]).
 //!
 //! # Complexity
-//! O(n log n) expected time, O(n) memory; spade's structure is dropped once the flat arrays
-//! are filled (memory per point: `docs/algorithms.md` §0.2).
+//! O(n log n) expected time, O(n) memory: the flat arrays are the only structure (memory per
+//! point: `docs/algorithms.md` §7.3).
 
 pub(crate) mod brio;
 mod build;
 pub(crate) mod hygiene;
+mod incremental;
 
 use crate::geometry::Edge;
 use crate::geometry::{distance, Point};

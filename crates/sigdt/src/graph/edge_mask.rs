@@ -14,6 +14,12 @@ impl EdgeMask {
         EdgeMask { on: vec![false; dt.num_halfedges()], count: 0 }
     }
 
+    /// The set whose flags are `on` (one per half-edge, both halves of an edge equal),
+    /// holding `count` edges.
+    pub(crate) fn from_flags(on: Vec<bool>, count: usize) -> EdgeMask {
+        EdgeMask { on, count }
+    }
+
     /// Whether the edge of half-edge `h` is in the set.
     #[inline]
     pub fn contains(&self, h: u32) -> bool {

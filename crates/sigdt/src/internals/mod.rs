@@ -1,6 +1,7 @@
 //! Not part of the API: the building blocks that the configuration and trace tests, the
 //! examples and the `sigdt-lab` crate reach into. Anything here may change in any release.
 
+mod spade_reference;
 mod testing;
 
 pub use crate::baselines::connect2d::bc0;
@@ -22,4 +23,5 @@ pub use crate::proximity::leaf_elimination::eliminate_leaves;
 pub use crate::proximity::sigdt::sigdt_mask;
 pub use crate::sig_auto::{sig_auto_with_join_ratio, JOIN_RATIO};
 pub use crate::sig_connect2d::initial_graph;
+pub use spade_reference::{spade_reference, FlatArrays};
 pub use testing::{check_reconstruction, filter_edges, first_crossing};

@@ -37,22 +37,52 @@ pub(crate) fn nearest_vertex_distances(dt: &Triangulation) -> Vec<f64> {
 }
 
 /// Per vertex: the squared distance to its nearest other vertex and that vertex (ties to the
-/// first edge met), `(∞, EMPTY)` for a lone point.
+/// first edge in [`Triangulation::edge_halfedges`] order), `(∞, EMPTY)` for a lone point.
+/// On several threads each vertex scans its own star, in parallel; on one, a single pass over
+/// the edges is cheaper. Both keep, among the nearest, the edge first in that order.
 fn nearest(dt: &Triangulation) -> Vec<(f64, u32)> {
-    let mut r = vec![(f64::INFINITY, EMPTY); dt.num_vertices()];
-    let mut visit = |a: u32, b: u32| {
-        let len2 = squared_distance(dt.point(a), dt.point(b));
-        for (x, y) in [(a, b), (b, a)] {
-            if len2 < r[x as usize].0 {
-                r[x as usize] = (len2, y);
-            }
-        }
-    };
     match dt.shape() {
-        Shape::Proper => dt.edge_halfedges().for_each(|h| visit(dt.origin(h), dt.dest(h))),
-        _ => dt.line_edges().for_each(|[a, b]| visit(a, b)),
+        Shape::Proper if !crate::parallel::is_parallel() => {
+            let mut r = vec![(f64::INFINITY, EMPTY); dt.num_vertices()];
+            for h in dt.edge_halfedges() {
+                let (a, b) = (dt.origin(h), dt.dest(h));
+                let len2 = squared_distance(dt.point(a), dt.point(b));
+                for (x, y) in [(a, b), (b, a)] {
+                    if len2 < r[x as usize].0 {
+                        r[x as usize] = (len2, y);
+                    }
+                }
+            }
+            r
+        }
+        Shape::Proper => crate::parallel::map_range(dt.num_vertices(), |v| {
+            let v = v as u32;
+            // (squared length, other end, the edge's representative half-edge)
+            let mut best = (f64::INFINITY, EMPTY, EMPTY);
+            for h in dt.incident(v) {
+                let twin = dt.twin(h);
+                let edge = if twin < h { twin } else { h };
+                let w = dt.other(h, v);
+                let len2 = squared_distance(dt.point(v), dt.point(w));
+                if len2 < best.0 || (len2 == best.0 && edge < best.2) {
+                    best = (len2, w, edge);
+                }
+            }
+            (best.0, best.1)
+        }),
+        _ => {
+            let mut r = vec![(f64::INFINITY, EMPTY); dt.num_vertices()];
+            for [a, b] in dt.line_edges() {
+                let len2 = squared_distance(dt.point(a), dt.point(b));
+                for (x, y) in [(a, b), (b, a)] {
+                    if len2 < r[x as usize].0 {
+                        r[x as usize] = (len2, y);
+                    }
+                }
+            }
+            r
+        }
     }
-    r
 }
 
 #[cfg(test)]

@@ -44,21 +44,37 @@ pub fn sigdt_mask(dt: &Triangulation) -> EdgeMask {
     sigdt_with_degrees(dt).0
 }
 
-/// [`sigdt_mask`] and the degree of every vertex in it, from one pass over the edges.
+/// [`sigdt_mask`] and the degree of every vertex in it. On one thread, one pass over the
+/// edges. On several, each half-edge is tested on its own (the test is symmetric bit for
+/// bit: `+` commutes and `dx² + dy²` does not depend on the direction), then each vertex
+/// counts its kept edges, both in parallel; the result is the same.
 pub(crate) fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
     let r = nearest_vertex_distances(dt);
-    let mut mask = EdgeMask::new(dt);
-    let mut degree = vec![0u32; dt.num_vertices()];
-    for h in dt.edge_halfedges() {
+    if !crate::parallel::is_parallel() {
+        let mut mask = EdgeMask::new(dt);
+        let mut degree = vec![0u32; dt.num_vertices()];
+        for h in dt.edge_halfedges() {
+            let (a, b) = (dt.origin(h), dt.dest(h));
+            let reach = (r[a as usize] + r[b as usize]) * (1.0 + TIE_SLACK);
+            if squared_distance(dt.point(a), dt.point(b)) <= reach * reach {
+                mask.set(dt, h, true);
+                degree[a as usize] += 1;
+                degree[b as usize] += 1;
+            }
+        }
+        return (mask, degree);
+    }
+    let on = crate::parallel::map_range(dt.num_halfedges(), |h| {
+        let h = h as u32;
         let (a, b) = (dt.origin(h), dt.dest(h));
         let reach = (r[a as usize] + r[b as usize]) * (1.0 + TIE_SLACK);
-        if squared_distance(dt.point(a), dt.point(b)) <= reach * reach {
-            mask.set(dt, h, true);
-            degree[a as usize] += 1;
-            degree[b as usize] += 1;
-        }
-    }
-    (mask, degree)
+        squared_distance(dt.point(a), dt.point(b)) <= reach * reach
+    });
+    let degree = crate::parallel::map_range(dt.num_vertices(), |v| {
+        dt.incident(v as u32).filter(|&h| on[h as usize]).count() as u32
+    });
+    let count = degree.iter().map(|&d| d as usize).sum::<usize>() / 2;
+    (EdgeMask::from_flags(on, count), degree)
 }
 
 /// The SIGDT edges as sorted input-index pairs; for collinear input, the SIG-conforming

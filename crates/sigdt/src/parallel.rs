@@ -1,0 +1,52 @@
+//! Data-parallel loops on the current rayon pool, or sequential without the `parallel`
+//! feature. Every loop here computes each element from the input alone (no reduction whose
+//! result depends on how the work is split), so results are the same bit for bit at every
+//! thread count and with the feature off. Callers that want a given number of threads run
+//! sigdt inside `rayon::ThreadPoolBuilder::new().num_threads(n).build()?.install(...)`;
+//! otherwise rayon's global pool is used (`RAYON_NUM_THREADS`, else one thread per core).
+
+/// Below this many elements a loop runs sequentially (splitting costs more than it gains).
+#[cfg(feature = "parallel")]
+const MIN_PARALLEL: usize = 1 << 14;
+
+/// Whether loops here may use more than one thread (the current pool has several). Passes
+/// with a cheaper sequential form use it only then; both forms give the same result.
+pub(crate) fn is_parallel() -> bool {
+    #[cfg(feature = "parallel")]
+    return rayon::current_num_threads() > 1;
+    #[cfg(not(feature = "parallel"))]
+    false
+}
+
+/// `(0..n).map(f).collect()`.
+pub(crate) fn map_range<T: Send>(n: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
+    #[cfg(feature = "parallel")]
+    if n >= MIN_PARALLEL {
+        use rayon::prelude::*;
+        return (0..n).into_par_iter().with_min_len(4096).map(f).collect();
+    }
+    (0..n).map(f).collect()
+}
+
+/// `items.iter().map(f).collect()`.
+pub(crate) fn map_slice<S: Sync, T: Send>(
+    items: &[S],
+    f: impl Fn(&S) -> T + Sync + Send,
+) -> Vec<T> {
+    #[cfg(feature = "parallel")]
+    if items.len() >= MIN_PARALLEL {
+        use rayon::prelude::*;
+        return items.par_iter().with_min_len(4096).map(f).collect();
+    }
+    items.iter().map(f).collect()
+}
+
+/// Sorts distinct values (so that stability cannot matter).
+pub(crate) fn sort_unstable(items: &mut [u64]) {
+    #[cfg(feature = "parallel")]
+    if items.len() >= MIN_PARALLEL {
+        use rayon::prelude::*;
+        return items.par_sort_unstable();
+    }
+    items.sort_unstable()
+}
