@@ -14,6 +14,8 @@
 //! sample of an ε < 1 sampling) and changes its spacing by less than a factor of two, so
 //! among readings that respect the spacing, the one that turns least follows the curve.
 //! Moves are taken largest gain first; each lowers the total turning, so the process ends.
+//! Only moves at a vertex that turns more than a sampled curve can (60°, from ε < 1) are
+//! considered: a reading that is locally consistent with a sampled curve is left alone.
 //!
 //! # Complexity
 //! O(n · d³) to collect the first moves (`d` the Delaunay degree), then O(d³ log n) per move.
@@ -27,11 +29,30 @@ use std::collections::BinaryHeap;
 /// The smallest gain in radians that counts: below it, two readings turn the same.
 const MIN_GAIN: f64 = 1e-9;
 
+/// The most a curve sampled with ε < 1 turns at a sample (60°: each of its two edges makes
+/// an angle of at most arcsin(ε/2) < 30° with the tangent).
+const MAX_SAMPLED_TURN: f64 = std::f64::consts::FRAC_PI_3;
+
 /// Makes every improving move (see the module docs).
 pub(crate) fn continue_smoothly(reading: &mut Reading<'_>) {
     let n = reading.dt.num_vertices();
     let mut queue = BinaryHeap::new();
-    for a in 0..n as u32 {
+    // A move changes the turning only at its four vertices, one of which must turn sharply
+    // (`push_moves`). Seen from the edge `ab` it starts from, the sharp one is `a`, `b` (a
+    // reading neighbour of `a`), `c` (a Delaunay neighbour of `a`) or `d` (a reading
+    // neighbour of such a `c`): so the first moves start at those `a`.
+    let cos_limit = MAX_SAMPLED_TURN.cos();
+    let dt = reading.dt;
+    let mut near_sharp = vec![false; n];
+    for v in (0..n as u32).filter(|&v| reading.turns_more_than(v, cos_limit)) {
+        let mut mark = |x: u32| {
+            near_sharp[x as usize] = true;
+            dt.incident(x).for_each(|h| near_sharp[dt.other(h, x) as usize] = true);
+        };
+        mark(v);
+        reading.neighbours(v).into_iter().filter(|&w| w != NONE).for_each(&mut mark);
+    }
+    for a in (0..n as u32).filter(|&a| near_sharp[a as usize]) {
         for b in reading.neighbours(a).into_iter().filter(|&b| b != NONE) {
             push_moves(reading, a, b, &mut queue);
         }
@@ -95,16 +116,22 @@ impl Ord for Move {
 /// Pushes every improving move that removes the reading edge `ab`.
 fn push_moves(reading: &Reading<'_>, a: u32, b: u32, queue: &mut BinaryHeap<Move>) {
     let dt = reading.dt;
+    let sharp = |v: u32| reading.turns_more_than(v, MAX_SAMPLED_TURN.cos());
     for h in dt.incident(a) {
         let c = dt.other(h, a);
         if c == b || reading.joined(a, c) {
             continue;
         }
         for d in reading.neighbours(c) {
-            if d == NONE || d == a || d == b || reading.joined(b, d) || !dt.has_edge(b, d) {
+            if d == NONE || d == a || d == b || reading.joined(b, d) {
                 continue;
             }
-            if !respects_spacing(reading, a, b, c, d) {
+            // A reading that turns no more than a sampled curve can at all four vertices
+            // is left as it is.
+            if !(sharp(a) || sharp(b) || sharp(c) || sharp(d)) {
+                continue;
+            }
+            if !respects_spacing(reading, a, b, c, d) || !dt.has_edge(b, d) {
                 continue;
             }
             let gain = gain_of(reading, a, b, c, d);

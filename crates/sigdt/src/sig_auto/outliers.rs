@@ -28,7 +28,7 @@
 //! input; a cut shortens the reading, so at most `n` cuts.
 use super::reading::{Reading, NONE};
 use crate::delaunay::Triangulation;
-use crate::geometry::{distance, ray_distance, segment_distance};
+use crate::geometry::{distance, ray_distance, segment_distance, squared_distance};
 use crate::proximity::sigdt::TIE_SLACK;
 use std::collections::HashMap;
 
@@ -151,30 +151,53 @@ pub(crate) fn detour_outliers(reading: &mut Reading<'_>) -> Vec<u32> {
     let dt = reading.dt;
     let mut outliers = Vec::new();
     loop {
-        let mut best: Option<(f64, u32, u32, Vec<u32>)> = None;
+        // Every detour of the current reading, farthest first; a cut can spoil a later one
+        // (they share a vertex), so each is checked again before it is made.
+        let mut found: Vec<(f64, u32, u32, u32)> = Vec::new();
         for a in (0..dt.num_vertices() as u32).filter(|&a| reading.degree(a) == 2) {
+            // The first run vertex lies farther from `a` than the spacing, so it is the end of
+            // the longer reading edge at `a`, and `b` is nearer to `a` than it.
+            let [x, y] = reading.neighbours(a);
+            let squared = |v: u32| squared_distance(reading.point(a), reading.point(v));
+            let (first, reach) = match squared(x).total_cmp(&squared(y)) {
+                std::cmp::Ordering::Greater => (x, squared(x)),
+                std::cmp::Ordering::Less => (y, squared(y)),
+                std::cmp::Ordering::Equal => continue,
+            };
+            // ... and farther than the edge beyond `a` from the reading's continuation
+            // beyond `a` (on a smooth curve it lies near it: most vertices stop here).
+            let beyond = reading.other(a, first);
+            let (pa, pb) = (reading.point(a), reading.point(beyond));
+            if ray_distance(reading.point(first), pb, pa) <= distance(pa, pb) {
+                continue;
+            }
             for h in dt.incident(a) {
                 let b = dt.other(h, a);
-                if reading.degree(b) != 2 || reading.joined(a, b) {
+                if squared(b) >= reach || reading.degree(b) != 2 || reading.joined(a, b) {
                     continue;
                 }
-                for first in reading.neighbours(a) {
-                    if let Some((margin, run)) = detour(reading, a, first, b) {
-                        if best.as_ref().map_or(true, |x| margin > x.0) {
-                            best = Some((margin, a, b, run));
-                        }
-                    }
+                if let Some((margin, _)) = detour(reading, a, first, b) {
+                    found.push((margin, a, first, b));
                 }
             }
         }
-        let Some((_, a, b, run)) = best else { break };
-        let (first, last) = (run[0], run[run.len() - 1]);
-        reading.relink(a, first, b);
-        reading.relink(b, last, a);
-        for &o in &run {
-            reading.detach(o);
+        if found.is_empty() {
+            break;
         }
-        outliers.extend(run);
+        found.sort_by(|x, y| y.0.total_cmp(&x.0).then((x.1, x.2, x.3).cmp(&(y.1, y.2, y.3))));
+        for (_, a, first, b) in found {
+            let still = reading.joined(a, first) && reading.degree(b) == 2;
+            let Some((_, run)) = still.then(|| detour(reading, a, first, b)).flatten() else {
+                continue;
+            };
+            let last = run[run.len() - 1];
+            reading.relink(a, first, b);
+            reading.relink(b, last, a);
+            for &o in &run {
+                reading.detach(o);
+            }
+            outliers.extend(run);
+        }
     }
     outliers.sort_unstable();
     outliers

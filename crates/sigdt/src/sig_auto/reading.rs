@@ -101,4 +101,18 @@ impl<'a> Reading<'a> {
     pub(crate) fn turning(&self, v: u32) -> f64 {
         self.turning_with(v, self.neighbours(v))
     }
+
+    /// Whether the reading turns at `v` by more than `limit` radians, `limit` in `[0, π)`:
+    /// the dot product of the two edge directions against `cos(limit)` times their lengths,
+    /// without the arc tangent.
+    pub(crate) fn turns_more_than(&self, v: u32, cos_limit: f64) -> bool {
+        let [x, y] = self.neighbours(v);
+        if x == NONE || y == NONE {
+            return false;
+        }
+        let (p, q, r) = (self.point(x), self.point(v), self.point(y));
+        let (u, w) = ([q[0] - p[0], q[1] - p[1]], [r[0] - q[0], r[1] - q[1]]);
+        let dot = u[0] * w[0] + u[1] * w[1];
+        dot < cos_limit * (u[0].hypot(u[1]) * w[0].hypot(w[1]))
+    }
 }
