@@ -20,6 +20,7 @@ STATUSES = (
     "sculpting-stuck",
     "curves",
     "network",
+    "noisy",
     "collinear",
     "too-few-points",
 )
@@ -58,7 +59,8 @@ class Reconstruction:
     status : str
         ``"polygon"``, ``"polygons"``, ``"sculpting-stuck"``, ``"curves"`` (loops and open
         paths, not every point on a loop), ``"network"`` (some point has 3 or more edges),
-        ``"collinear"`` or ``"too-few-points"``.
+        ``"noisy"`` (``"sig-auto"``: the edges zigzag, the points are too noisy or sparse
+        for a curve through them), ``"collinear"`` or ``"too-few-points"``.
     left_out : numpy.ndarray
         int64 indices of the points no loop reaches (only with ``"sculpting-stuck"``).
     duplicates : numpy.ndarray

@@ -6,7 +6,7 @@ use std::time::Instant;
 use anyhow::Result;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::Args;
-use sigdt::{Method, Options, Reconstruction, Status};
+use sigdt::{Method, Options, Reconstruction};
 
 use crate::format::OutputFormat;
 use crate::input::Input;
@@ -52,7 +52,7 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
     let elapsed = start.elapsed().as_secs_f64() * 1e3;
     if args.verbose {
         summary(&options, &rec, elapsed);
-    } else if let Status::SculptingStuck { .. } = rec.status {
+    } else if rec.status.is_warning() {
         note(&format!("sigdt: warning: {}", rec.status));
     }
     output.write(|w| format.write(w, &points, &rec))

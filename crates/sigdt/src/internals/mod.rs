@@ -15,7 +15,7 @@ pub use crate::connect::extract::{loop_edges, loops};
 pub use crate::connect::{inflate::inflate, sculpt::sculpt};
 pub use crate::delaunay::hygiene::Scaling;
 pub use crate::error::find_by_name;
-pub use crate::geometry::{distance, orient2d, segments_cross, squared_distance};
+pub use crate::geometry::{distance, orient2d, segments_cross, squared_distance, turning};
 pub use crate::graph::{chains, Chain, EdgeMask, UnionFind};
 pub use crate::proximity::emst::{emst_mask, minimum_spanning_forest};
 pub use crate::proximity::kdtree::KdTree;

@@ -136,6 +136,11 @@ pub enum Status {
     /// Some point has three or more edges (a junction). Paths run between points whose
     /// number of edges is not two; a path may start and end at the same junction.
     Network,
+    /// The edges zigzag somewhere (four consecutive vertices turning by more than 60° in
+    /// alternating directions, which no curve sampled with ε < 1 does, corners included):
+    /// the points are too noisy, or too sparse, for a curve through them there. The loops
+    /// and paths are the method's best reading all the same. (SIG-AUTO.)
+    Noisy,
     /// All distinct points lie on one line: the result is the path through them in their
     /// order along the line.
     Collinear,
@@ -150,8 +155,14 @@ impl Status {
         matches!(self, Status::Polygon | Status::Polygons)
     }
 
+    /// True when the status says the result is not a faithful reading of curves: sculpting
+    /// got stuck, edges meet at junctions, or they zigzag. Front ends warn then.
+    pub fn is_warning(&self) -> bool {
+        matches!(self, Status::SculptingStuck { .. } | Status::Network | Status::Noisy)
+    }
+
     /// A short kebab-case name: `polygon`, `polygons`, `sculpting-stuck`, `curves`,
-    /// `network`, `collinear`, `too-few-points`.
+    /// `network`, `noisy`, `collinear`, `too-few-points`.
     pub fn name(&self) -> &'static str {
         match self {
             Status::Polygon => "polygon",
@@ -159,6 +170,7 @@ impl Status {
             Status::SculptingStuck { .. } => "sculpting-stuck",
             Status::Curves => "curves",
             Status::Network => "network",
+            Status::Noisy => "noisy",
             Status::Collinear => "collinear",
             Status::TooFewPoints => "too-few-points",
         }
@@ -177,6 +189,7 @@ impl std::fmt::Display for Status {
             ),
             Status::Curves => f.write_str("loops and open paths, not all points on loops"),
             Status::Network => f.write_str("edges meet at junctions (a point with 3+ edges)"),
+            Status::Noisy => f.write_str("the edges zigzag: the points are too noisy or sparse"),
             Status::Collinear => f.write_str("all points are collinear: one open path"),
             Status::TooFewPoints => f.write_str("fewer than three distinct points"),
         }

@@ -31,7 +31,7 @@ const MIN_GAIN: f64 = 1e-9;
 
 /// The most a curve sampled with ε < 1 turns at a sample (60°: each of its two edges makes
 /// an angle of at most arcsin(ε/2) < 30° with the tangent).
-const MAX_SAMPLED_TURN: f64 = std::f64::consts::FRAC_PI_3;
+pub(crate) const MAX_SAMPLED_TURN: f64 = std::f64::consts::FRAC_PI_3;
 
 /// Makes every improving move (see the module docs).
 pub(crate) fn continue_smoothly(reading: &mut Reading<'_>) {

@@ -74,6 +74,7 @@ use chain_join::Chains;
 #[doc(hidden)]
 pub use chain_join::JOIN_RATIO;
 use closed_component::closed_component;
+use continuation::MAX_SAMPLED_TURN;
 use reading::Reading;
 use spanning_forests::Forests;
 
@@ -145,10 +146,15 @@ pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstr
         }
         outliers.extend(cut);
         continuation::continue_smoothly(&mut reading);
+        let zigzags = reading.zigzags(MAX_SAMPLED_TURN.cos());
         let pairs: Vec<[u32; 2]> =
             reading.pairs().into_iter().map(|[a, b]| [whole(a), whole(b)]).collect();
         let inside: Vec<usize> = read.inside.iter().map(|&v| dt.input_index(whole(v))).collect();
-        return finish(dt, pairs, inside, &outliers, read.stats);
+        let mut rec = finish(dt, pairs, inside, &outliers, read.stats);
+        if zigzags && matches!(rec.status, Status::Polygon | Status::Polygons | Status::Curves) {
+            rec.status = Status::Noisy;
+        }
+        return rec;
     }
     unreachable!("the last round always reads its points")
 }

@@ -3,7 +3,7 @@
 //! [`continuation`](super::continuation)) edit. Every vertex has at most two neighbours;
 //! an end of a path has one, a point on no curve none.
 use crate::delaunay::Triangulation;
-use crate::geometry::{distance, turning, Point};
+use crate::geometry::{distance, orient2d, turning, Point};
 
 /// No neighbour in a slot.
 pub(crate) const NONE: u32 = u32::MAX;
@@ -100,6 +100,26 @@ impl<'a> Reading<'a> {
     /// How much the reading turns at `v` (0 at an end).
     pub(crate) fn turning(&self, v: u32) -> f64 {
         self.turning_with(v, self.neighbours(v))
+    }
+
+    /// Whether the reading zigzags: four consecutive vertices that each turn by more than
+    /// `cos_limit`'s angle, in alternating directions. A sampled curve turns less than that
+    /// at every sample (ε < 1 gives 60°); a corner makes one or two such turns in a row, in
+    /// one direction or in two, but never three changes of direction.
+    pub(crate) fn zigzags(&self, cos_limit: f64) -> bool {
+        let side = |v: u32| {
+            let [x, y] = self.neighbours(v);
+            orient2d(self.point(x), self.point(v), self.point(y)).signum()
+        };
+        let sharp = |v: u32| self.degree(v) == 2 && self.turns_more_than(v, cos_limit);
+        (0..self.neighbours.len() as u32).any(|b| {
+            let [a, c] = self.neighbours(b);
+            if !(sharp(b) && sharp(a) && sharp(c)) {
+                return false;
+            }
+            let d = self.other(c, b);
+            sharp(d) && side(a) == -side(b) && side(c) == -side(b) && side(d) == side(b)
+        })
     }
 
     /// Whether the reading turns at `v` by more than `limit` radians, `limit` in `[0, π)`:
