@@ -7,7 +7,7 @@ mod from_edges;
 mod polygons;
 
 pub(crate) use degenerate::degenerate_result;
-pub(crate) use from_edges::from_vertex_pairs;
+pub(crate) use from_edges::{from_new_vertices, from_vertex_pairs};
 pub use polygons::Polygon;
 
 /// The [`LeftOut`] entries of points left inside when sculpting got stuck (input indices,
