@@ -242,7 +242,7 @@ fn golden_curves_graph_filters() {
 
 /// OPTIMALTRANSPORT places vertices of its own, so it reconstructs no case exactly
 /// ([MOW22] Table 2's 0 %, structural): its list is empty and it has no floor. The run still
-/// checks the output invariants on every case.
+/// checks the output invariants on every case it runs on ([`runs_on`]).
 #[test]
 fn golden_curves_optimal_transport() {
     curves(Method::OptimalTransport.name(), &[]);

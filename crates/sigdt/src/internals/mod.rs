@@ -4,9 +4,7 @@
 mod testing;
 
 pub use crate::baselines::connect2d::bc0;
-pub use crate::baselines::optimal_transport::{
-    default_stop, optimal_transport_with, Stop, DEFAULT_DIVISOR,
-};
+pub use crate::baselines::optimal_transport::{default_stop, optimal_transport_with, Stop};
 pub use crate::baselines::{
     crawl::crawl, crust::crust, hnn_crust::hnn_crust, nn_crust::nn_crust, peel::peel,
 };
