@@ -62,10 +62,20 @@ impl OutputFormat {
     }
 }
 
-/// The SVG output: the points and the result, with the default [`RenderOptions`].
+/// The SVG output: the points and the result, with the default [`RenderOptions`]. A method
+/// with vertices of its own is drawn on them (the title says so).
 fn picture(points: &[Point], rec: &Reconstruction) -> String {
     let layers = Layers { points: true, result: Some(rec), ..Layers::default() };
-    render_svg(points, &layers, &RenderOptions::default())
+    let vertices = rec.vertex_positions(points);
+    let mut options = RenderOptions::default();
+    if !std::ptr::eq(vertices, points) {
+        options.title = Some(format!(
+            "sigdt: {} points, drawn at the method's {} vertices",
+            points.len(),
+            vertices.len()
+        ));
+    }
+    render_svg(vertices, &layers, &options)
 }
 
 impl Default for OutputFormat {

@@ -52,6 +52,12 @@ pub enum Method {
     Peel,
     /// The Euclidean minimum spanning tree: the trivial baseline for open curves.
     Emst,
+    /// OPTIMALTRANSPORT (de Goes, Cohen-Steiner, Alliez, Desbrun 2011): simplifies the
+    /// Delaunay triangulation by half-edge collapses that keep the optimal-transport cost of
+    /// the points low, until a quarter of them are left as vertices. Its vertices are its own
+    /// ([`Vertices::New`](crate::Vertices::New)), not input points, so it is never exact;
+    /// meant for noisy input. Ignores `leaf_elimination`.
+    OptimalTransport,
 }
 
 impl Method {
@@ -67,6 +73,7 @@ impl Method {
         Method::Discur,
         Method::Peel,
         Method::Emst,
+        Method::OptimalTransport,
     ];
 
     /// The kebab-case name.
@@ -82,6 +89,7 @@ impl Method {
             Method::Discur => "discur",
             Method::Peel => "peel",
             Method::Emst => "emst",
+            Method::OptimalTransport => "optimal-transport",
         }
     }
 }
@@ -141,6 +149,7 @@ pub fn reconstruct_on(dt: &Triangulation, options: &Options) -> Reconstruction {
         }
         Method::SigAuto => return sig_auto::sig_auto_on(dt),
         Method::Connect2d => return baselines::connect2d::connect2d_on(dt),
+        Method::OptimalTransport => return baselines::optimal_transport::optimal_transport_on(dt),
         Method::Crust => baselines::crust::crust,
         Method::NnCrust => baselines::nn_crust::nn_crust,
         Method::HnnCrust => baselines::hnn_crust::hnn_crust,

@@ -13,7 +13,7 @@
 //! The 10⁷-point run is `#[ignore]`d: `cargo test --release --test degenerate -- --ignored`.
 use sigdt::internals::check_reconstruction;
 use sigdt::samplers::{cycle_edges, random_closed_curve, Rng, Sample};
-use sigdt::{reconstruct, Edge, Error, Method, Options, Point, Reconstruction, Status};
+use sigdt::{reconstruct, Edge, Error, Method, Options, Point, Reconstruction, Status, Vertices};
 use std::time::Instant;
 
 /// Heavy in release, light in debug builds.
@@ -202,10 +202,14 @@ fn three_points_give_the_triangle() {
     // Voronoi vertex lies on the hypotenuse; the others find the legs shorter). SIG-AUTO
     // closes the legs' path: the hypotenuse is less than twice the longest leg. DISCUR
     // closes it too: for a curve of two unit edges the criterion takes up to about 2.05.
+    // OPTIMALTRANSPORT keeps ceil(3 / 4) = 1 vertex, which holds every sample: no edge.
     let points = [[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]];
     for (method, rec) in run_all("three points", &points) {
         if is_connect(method) || matches!(method, Method::SigAuto | Method::Discur) {
             assert_eq!((&rec.status, &rec.loops), (&Status::Polygon, &vec![vec![0, 2, 1]]));
+        } else if method == Method::OptimalTransport {
+            assert_eq!((&rec.status, rec.edges.len()), (&Status::Curves, 0));
+            assert!(matches!(&rec.vertices, Vertices::New(v) if v.len() == 1), "{rec:?}");
         } else {
             assert_eq!((&rec.status, &rec.paths), (&Status::Curves, &vec![vec![1, 0, 2]]));
         }

@@ -4,14 +4,19 @@
 //! do not depend on input order, translation, uniform scaling or a 90° rotation. SIG-AUTO
 //! returns the same closed curve, and keeps the curve open when a stretch of it is cut out.
 //! DISCUR's result does not depend on input order either.
+//! OPTIMALTRANSPORT, whose vertices are its own, keeps the invariants on them, stays inside
+//! the points' bounding box and scales exactly with the input.
 //!
 //! The seed is fixed so CI is reproducible; explore with e.g.
 //! `PROPTEST_RNG_SEED=123 PROPTEST_CASES=2000 cargo test --release --test properties`.
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 use sigdt::internals::check_reconstruction;
+use sigdt::samplers::uniform_noise;
 use sigdt::samplers::{Blob, Modulation, Rng, Sample};
-use sigdt::{proximity_graph, reconstruct, Edge, GraphKind, Method, Options, Point, Status};
+use sigdt::{
+    proximity_graph, reconstruct, Edge, GraphKind, Method, Options, Point, Status, Vertices,
+};
 
 /// A random blob sampled densely: spacing at most 0.3 of the blob's guaranteed curvature
 /// radius bound (which bounds lfs from above only, so this is a practical, not a proven,
@@ -145,5 +150,36 @@ proptest! {
             .collect();
         relabelled.sort_unstable();
         prop_assert_eq!(&relabelled, &base.edges, "permutation");
+    }
+}
+
+proptest! {
+    // Fewer cases: each runs OPTIMALTRANSPORT twice on a few hundred points.
+    #![proptest_config(Config { cases: 16, ..config() })]
+
+    #[test]
+    fn optimal_transport_keeps_the_invariants_on_its_own_vertices(
+        sample in dense_blob(),
+        noise in 0.0f64..0.01,
+        seed in any::<u64>(),
+    ) {
+        let options = Options { method: Method::OptimalTransport, ..Options::default() };
+        let points = uniform_noise(&sample.points, noise, seed).unwrap();
+        let rec = reconstruct(&points, &options).unwrap();
+        prop_assert!(check_reconstruction(&points, &rec).is_ok());
+        let Vertices::New(vertices) = &rec.vertices else {
+            return Err(TestCaseError::fail("not on new vertices"));
+        };
+        prop_assert!(!rec.edges.is_empty() && vertices.len() <= points.len().div_ceil(4));
+        let (lo, hi) = points.iter().fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
+            ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
+        });
+        prop_assert!(vertices.iter().all(|v| (0..2).all(|a| v[a] >= lo[a] && v[a] <= hi[a])));
+        // Scaling by a power of two is exact in the kernel: the same result, scaled.
+        let scaled = transformed(&points, |[x, y]| [x * 0.125, y * 0.125]);
+        let small = reconstruct(&scaled, &options).unwrap();
+        prop_assert_eq!(&small.edges, &rec.edges);
+        let expected = Vertices::New(vertices.iter().map(|v| [v[0] * 0.125, v[1] * 0.125]).collect());
+        prop_assert_eq!(small.vertices, expected);
     }
 }

@@ -3,10 +3,11 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use anyhow::Result;
+use anyhow::{bail, Result};
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::Args;
-use sigdt::{Method, Options, Reconstruction};
+use sigdt::io::OutputFormat as TextFormat;
+use sigdt::{Method, Options, Reconstruction, Vertices};
 
 use crate::format::OutputFormat;
 use crate::input::Input;
@@ -50,6 +51,16 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
     let start = Instant::now();
     let rec = sigdt::reconstruct(&points, &options)?;
     let elapsed = start.elapsed().as_secs_f64() * 1e3;
+    if let (Vertices::New(_), OutputFormat::Text(TextFormat::Edges | TextFormat::Loops)) =
+        (&rec.vertices, format)
+    {
+        // Indices into vertices the user never sees would be a silent wrong answer.
+        bail!(
+            "{} places vertices of its own, which --format {format} cannot show: \
+             use --format wkt, geojson or svg (coordinates)",
+            args.method
+        );
+    }
     if args.verbose {
         summary(&options, &rec, elapsed);
     } else if rec.status.is_warning() {

@@ -248,3 +248,23 @@ fn sig_auto_writes_loops_with_holes_and_open_paths() {
     let verbose = sigdt_in(dir.path(), &[&args[..], &["--verbose"]].concat(), None);
     assert!(verbose.expect(0).stderr.contains("curves"), "{}", verbose.stderr);
 }
+
+#[test]
+fn a_method_with_vertices_of_its_own_writes_coordinates_not_indices() {
+    let dir = tempdir();
+    write_points(dir.path(), "gon.xy", &circle(40, 3.0));
+    let run = |format: &str| {
+        let args = ["reconstruct", "gon.xy", "--method", "optimal-transport", "--format", format];
+        sigdt_in(dir.path(), &args, None)
+    };
+    for format in ["edges", "loops"] {
+        run(format).error(&["optimal-transport", "vertices of its own", "wkt"]);
+    }
+    // A quarter of the 40 points are left as vertices, off the input points.
+    let wkt = run("wkt");
+    let text = &wkt.ok().stdout;
+    assert!(text.starts_with("POLYGON") || text.starts_with("LINESTRING"), "{wkt}");
+    let input: Vec<String> = circle(40, 3.0).iter().map(|[x, y]| format!("{x:?} {y:?}")).collect();
+    assert!(!input.iter().all(|p| text.contains(p.as_str())), "{wkt}");
+    assert!(run("svg").ok().stdout.contains("drawn at the method&apos;s 10 vertices"));
+}

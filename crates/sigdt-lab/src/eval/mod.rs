@@ -19,7 +19,9 @@ mod metrics;
 mod overlap;
 
 pub use area::{area_difference, AreaDifference};
-pub use distance::{distance_errors, DistanceErrors, SAMPLES_PER_DIAGONAL};
+pub use distance::{
+    distance_errors, reconstruction_distance_errors, DistanceErrors, SAMPLES_PER_DIAGONAL,
+};
 pub use epsilon::{epsilon, graph_epsilon, EpsilonVariant};
 pub use exact::{edge_diff, is_exact, EdgeDiff};
 pub use metrics::{evaluate, Metrics};

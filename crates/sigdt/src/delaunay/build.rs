@@ -19,7 +19,7 @@ impl Triangulation {
         let scaled = |i: u32| scaling.apply(points[i as usize]);
         match first_triangle(points.len(), scaled) {
             Some(seed) => proper(points, scaling, seed),
-            None => Ok(on_a_line(points.len(), scaled)),
+            None => Ok(on_a_line(points.len(), scaled, scaling)),
         }
     }
 }
@@ -41,7 +41,7 @@ fn first_triangle(n: usize, p: impl Fn(u32) -> Point) -> Option<[u32; 3]> {
 
 /// Collinear input and fewer than three distinct points: vertices sorted along the line
 /// (lexicographic order of the coordinates is the order along any line), duplicates merged.
-fn on_a_line(n: usize, p: impl Fn(u32) -> Point) -> Triangulation {
+fn on_a_line(n: usize, p: impl Fn(u32) -> Point, scaling: Scaling) -> Triangulation {
     let mut order: Vec<u32> = (0..n as u32).collect();
     order.sort_by(|&i, &j| {
         let (a, b) = (p(i), p(j));
@@ -69,6 +69,7 @@ fn on_a_line(n: usize, p: impl Fn(u32) -> Point) -> Triangulation {
         duplicates,
         input_len: n,
         shape,
+        scaling,
     }
 }
 
@@ -128,6 +129,7 @@ fn proper(input: &[Point], scaling: Scaling, seed: [u32; 3]) -> Result<Triangula
         duplicates,
         input_len: n,
         shape: Shape::Proper,
+        scaling,
     })
 }
 

@@ -57,6 +57,7 @@ pub struct Triangulation {
     duplicates: Vec<Edge>,
     input_len: usize,
     shape: Shape,
+    scaling: hygiene::Scaling,
 }
 
 /// The half-edge after `h` in its triangle.
@@ -110,6 +111,13 @@ impl Triangulation {
     #[inline]
     pub fn point(&self, v: u32) -> Point {
         self.points[v as usize]
+    }
+
+    /// The caller's coordinates of `p`, a point in the scaled coordinates of
+    /// [`point`](Self::point): for methods that place vertices of their own.
+    #[inline]
+    pub fn unscale(&self, p: Point) -> Point {
+        self.scaling.unapply(p)
     }
 
     /// Index into the caller's points of vertex `v` (the lowest among exact duplicates).

@@ -6,6 +6,7 @@ mod testing;
 
 pub use crate::baselines::connect2d::bc0;
 pub use crate::baselines::discur::{discur_variant, Variant as DiscurVariant};
+pub use crate::baselines::optimal_transport::{default_stop, optimal_transport_with, Stop};
 pub use crate::baselines::{
     crawl::crawl, crust::crust, discur::discur, hnn_crust::hnn_crust, nn_crust::nn_crust,
     peel::peel,

@@ -9,7 +9,11 @@ use crate::result::{LeftOutReason, Reconstruction, Status, Vertices};
 use std::collections::HashMap;
 
 /// Checks the output invariants of `rec` for `points`; the error says what is violated.
+/// With [`Vertices::New`] the edges, loops and paths are checked on the new vertices, while
+/// duplicates and left-out points still name input points.
 pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<(), String> {
+    let inputs = points.len();
+    let new = matches!(rec.vertices, Vertices::New(_));
     let points: &[Point] = match &rec.vertices {
         Vertices::Input => points,
         Vertices::Moved(moved) if moved.len() != points.len() => {
@@ -72,12 +76,17 @@ pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<()
     if from_chains != rec.edges {
         return Err("edges differ from the edges of the loops and paths".into());
     }
+    if rec.duplicates.iter().flatten().any(|&i| i >= inputs) {
+        return Err("a duplicate is out of range".into());
+    }
     if rec.status.is_manifold() {
         // Duplicates and the points left out on purpose are on no loop.
         let off: Vec<bool> = {
             let mut d = vec![false; n];
-            rec.duplicates.iter().for_each(|&[i, _]| d[i] = true);
-            rec.left_out.iter().filter(|l| l.index < n).for_each(|l| d[l.index] = true);
+            if !new {
+                rec.duplicates.iter().for_each(|&[i, _]| d[i] = true);
+                rec.left_out.iter().filter(|l| l.index < n).for_each(|l| d[l.index] = true);
+            }
             d
         };
         if let Some(v) = (0..n).find(|&v| !off[v] && !on_chain[v]) {
@@ -111,7 +120,8 @@ pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<()
         rec.edges.iter().flatten().for_each(|&v| has[v] = true);
         has
     };
-    if let Some(l) = rec.left_out.iter().find(|l| l.index >= n || has_edge[l.index]) {
+    let has_edge = |i: usize| !new && has_edge[i];
+    if let Some(l) = rec.left_out.iter().find(|l| l.index >= inputs || has_edge(l.index)) {
         return Err(format!("left-out point {} is out of range or has an edge", l.index));
     }
     if let Some((a, b)) = first_crossing(points, &rec.edges) {
@@ -186,6 +196,22 @@ mod tests {
             ..Reconstruction::default()
         };
         assert!(check_reconstruction(&pts, &rec).unwrap_err().contains("cross"));
+    }
+
+    #[test]
+    fn new_vertices_are_checked_apart_from_the_input() {
+        // Three new vertices for six input points, two of them duplicates.
+        let inputs = [[0.0, 0.0]; 6];
+        let mut rec = Reconstruction {
+            edges: vec![[0, 1], [0, 2], [1, 2]],
+            loops: vec![vec![0, 1, 2]],
+            duplicates: vec![[4, 0], [5, 1]],
+            vertices: Vertices::New(vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]),
+            ..Reconstruction::default()
+        };
+        check_reconstruction(&inputs, &rec).unwrap();
+        rec.duplicates.push([6, 0]);
+        assert!(check_reconstruction(&inputs, &rec).unwrap_err().contains("duplicate"));
     }
 
     #[test]

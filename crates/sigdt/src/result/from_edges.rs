@@ -15,11 +15,14 @@
 //! at most 2 otherwise, and [`Network`](Status::Network) when some vertex has degree 3 or
 //! more.
 //!
+//! The same reading serves methods that place vertices of their own
+//! ([`Vertices::New`]): their chains index those vertices.
+//!
 //! # Complexity
 //! O(m log m) for `m` edges (the sort), O(n + m) for the walk.
 use super::{Reconstruction, Stats, Status, Vertices};
 use crate::delaunay::Triangulation;
-use crate::geometry::orient2d;
+use crate::geometry::{orient2d, Point};
 use crate::graph::chains;
 
 /// The result whose edges are the vertex pairs `pairs` of `dt` (any order, repeats and
@@ -29,7 +32,44 @@ pub(crate) fn from_vertex_pairs(
     pairs: Vec<[u32; 2]>,
     mut stats: Stats,
 ) -> Reconstruction {
-    let n = dt.num_vertices();
+    let mut rec =
+        from_pairs(dt.num_vertices(), pairs, |v| dt.point(v as u32), |v| dt.input_index(v as u32));
+    rec.edges = dt.to_input_edges(rec.edges.iter().map(|&[a, b]| [a as u32, b as u32]));
+    stats.points = dt.input_len();
+    stats.distinct_points = dt.num_vertices();
+    Reconstruction { duplicates: dt.duplicates().to_vec(), stats, ..rec }
+}
+
+/// The result of a method that places vertices of its own (OPTIMALTRANSPORT): `points` in
+/// `dt`'s scaled coordinates, `pairs` between them. The result's edges, loops and paths
+/// index [`Vertices::New`], which holds the points in the caller's coordinates; its
+/// duplicates and point counts are `dt`'s.
+pub(crate) fn from_new_vertices(
+    dt: &Triangulation,
+    points: &[Point],
+    pairs: Vec<[u32; 2]>,
+) -> Reconstruction {
+    let rec = from_pairs(points.len(), pairs, |v| points[v], |v| v);
+    Reconstruction {
+        duplicates: dt.duplicates().to_vec(),
+        vertices: Vertices::New(points.iter().map(|&p| dt.unscale(p)).collect()),
+        stats: Stats {
+            points: dt.input_len(),
+            distinct_points: dt.num_vertices(),
+            ..Stats::default()
+        },
+        ..rec
+    }
+}
+
+/// The chains and status of the edges `pairs` between vertices `0..n` at `point(v)`; loops
+/// and paths are reported through `label(v)`, the edges as sorted vertex pairs.
+fn from_pairs(
+    n: usize,
+    pairs: Vec<[u32; 2]>,
+    point: impl Fn(usize) -> Point,
+    label: impl Fn(usize) -> usize,
+) -> Reconstruction {
     let mut edges: Vec<[usize; 2]> = pairs
         .into_iter()
         .filter(|[a, b]| a != b)
@@ -42,11 +82,10 @@ pub(crate) fn from_vertex_pairs(
     let (mut loops, mut paths) = (Vec::new(), Vec::new());
     for chain in chains(n, &edges, None) {
         if chain.cycle {
-            loops.push(ccw_loop(dt, chain.vertices));
+            loops.push(ccw_loop(&point, &label, chain.vertices));
             continue;
         }
-        let mut p: Vec<usize> =
-            chain.vertices.into_iter().map(|v| dt.input_index(v as u32)).collect();
+        let mut p: Vec<usize> = chain.vertices.into_iter().map(&label).collect();
         // Open paths start at their smaller end; a path closing through a junction starts
         // there and runs towards its smaller neighbour.
         if p.first() > p.last() || (p.first() == p.last() && p[1] > p[p.len() - 2]) {
@@ -69,35 +108,27 @@ pub(crate) fn from_vertex_pairs(
     } else {
         Status::Curves
     };
-    stats.points = dt.input_len();
-    stats.distinct_points = n;
-    Reconstruction {
-        edges: dt.to_input_edges(edges.iter().map(|&[a, b]| [a as u32, b as u32])),
-        loops,
-        paths,
-        status,
-        duplicates: dt.duplicates().to_vec(),
-        left_out: Vec::new(),
-        vertices: Vertices::Input,
-        stats,
-    }
+    Reconstruction { edges, loops, paths, status, ..Reconstruction::default() }
 }
 
-/// The loop through vertices `cycle` as input indices, counter-clockwise, starting at its
-/// smallest index. The orientation is that of the corner at the lowest vertex (lowest `y`,
-/// then lowest `x`), which is convex in a simple polygon: one exact `orient2d`.
-fn ccw_loop(dt: &Triangulation, cycle: Vec<usize>) -> Vec<usize> {
+/// The loop through vertices `cycle` as labels, counter-clockwise, starting at its smallest
+/// label. The orientation is that of the corner at the lowest vertex (lowest `y`, then
+/// lowest `x`), which is convex in a simple polygon: one exact `orient2d`.
+fn ccw_loop(
+    point: impl Fn(usize) -> Point,
+    label: impl Fn(usize) -> usize,
+    cycle: Vec<usize>,
+) -> Vec<usize> {
     let k = cycle.len();
-    let point = |a: usize| dt.point(cycle[a % k] as u32);
+    let at = |a: usize| point(cycle[a % k]);
     let lowest = (0..k)
         .min_by(|&a, &b| {
-            let (p, q) = (point(a), point(b));
+            let (p, q) = (at(a), at(b));
             p[1].total_cmp(&q[1]).then(p[0].total_cmp(&q[0]))
         })
         .unwrap_or(0);
-    let clockwise =
-        k >= 3 && orient2d(point(lowest + k - 1), point(lowest), point(lowest + 1)) < 0.0;
-    let mut indices: Vec<usize> = cycle.into_iter().map(|v| dt.input_index(v as u32)).collect();
+    let clockwise = k >= 3 && orient2d(at(lowest + k - 1), at(lowest), at(lowest + 1)) < 0.0;
+    let mut indices: Vec<usize> = cycle.into_iter().map(label).collect();
     if clockwise {
         indices.reverse();
     }

@@ -7,7 +7,7 @@ mod from_edges;
 mod polygons;
 
 pub(crate) use degenerate::degenerate_result;
-pub(crate) use from_edges::from_vertex_pairs;
+pub(crate) use from_edges::{from_new_vertices, from_vertex_pairs};
 pub use polygons::Polygon;
 
 /// The [`LeftOut`] entries of points left inside when sculpting got stuck (input indices,
@@ -48,6 +48,17 @@ pub struct Reconstruction {
     pub vertices: Vertices,
     /// Per-stage counts, for diagnostics and benchmarks.
     pub stats: Stats,
+}
+
+impl Reconstruction {
+    /// The coordinates the edges, loops and paths index: `input` (the caller's points),
+    /// unless the method moved them or placed its own ([`Vertices`]).
+    pub fn vertex_positions<'a>(&'a self, input: &'a [Point]) -> &'a [Point] {
+        match &self.vertices {
+            Vertices::Input => input,
+            Vertices::Moved(points) | Vertices::New(points) => points,
+        }
+    }
 }
 
 /// A distinct input point that a method left out on purpose.

@@ -76,7 +76,9 @@ impl FromStr for OutputFormat {
     }
 }
 
-/// Writes `rec`, whose indices refer to `points`, to `w` in `format`.
+/// Writes `rec`, whose indices refer to `points`, to `w` in `format`. WKT and GeoJSON take
+/// the coordinates from [`Reconstruction::vertex_positions`]: the moved or new vertices
+/// of a method that has them; edges and loops print indices only.
 pub fn write_reconstruction<W: Write>(
     mut w: W,
     format: OutputFormat,
@@ -84,6 +86,7 @@ pub fn write_reconstruction<W: Write>(
     rec: &Reconstruction,
 ) -> io::Result<()> {
     let mut out = Vec::new();
+    let points = rec.vertex_positions(points);
     match format {
         OutputFormat::Edges => return write_edges(w, &rec.edges),
         OutputFormat::Loops => loops(&mut out, rec)?,
