@@ -19,6 +19,9 @@ _Reconstruction = TypedDict(
         "path_offsets": npt.NDArray[np.int64],
         "status": str,
         "left_out": npt.NDArray[np.int64],
+        "left_out_reasons": list[str],
+        "vertices": str,  # "input", "moved" or "new"
+        "positions": npt.NDArray[np.float64] | None,  # (k, 2), None for "input"
         "duplicates": npt.NDArray[np.int64],  # (d, 2)
         "stats": dict[str, int],
     },

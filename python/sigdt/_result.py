@@ -61,8 +61,19 @@ class Reconstruction:
         paths, not every point on a loop), ``"network"`` (some point has 3 or more edges),
         ``"noisy"`` (``"sig-auto"``: the edges zigzag, the points are too noisy or sparse
         for a curve through them), ``"collinear"`` or ``"too-few-points"``.
+    vertices : numpy.ndarray
+        The coordinates that ``edges``, ``loops`` and ``paths`` index, ``(k, 2)`` float64:
+        ``points`` itself, unless the method moved the points (``"stretch-denoise"``) or
+        placed vertices of its own (``"optimal-transport"``); see ``vertices_kind``.
+    vertices_kind : str
+        ``"input"``, ``"moved"`` or ``"new"``.
     left_out : numpy.ndarray
-        int64 indices of the points no loop reaches (only with ``"sculpting-stuck"``).
+        int64 indices (sorted) of the distinct points the method left out on purpose: inside
+        the boundary when sculpting got stuck, or outliers (``"sig-auto"``); they get no
+        edges.
+    left_out_reasons : list of str
+        Why each point of ``left_out`` was left out, in the same order: ``"inside"``,
+        ``"outlier"``, ``"eliminated"`` or ``"non-conforming"``.
     duplicates : numpy.ndarray
         ``(d, 2)`` int64 rows ``[duplicate, representative]``; duplicates get no edges.
     stats : dict
@@ -94,8 +105,21 @@ class Reconstruction:
         return self._fields["status"]
 
     @property
+    def vertices(self) -> np.ndarray:
+        positions = self._fields["positions"]
+        return self.points if positions is None else positions
+
+    @property
+    def vertices_kind(self) -> str:
+        return self._fields["vertices"]
+
+    @property
     def left_out(self) -> np.ndarray:
         return self._fields["left_out"]
+
+    @property
+    def left_out_reasons(self) -> list[str]:
+        return self._fields["left_out_reasons"]
 
     @property
     def duplicates(self) -> np.ndarray:
@@ -133,7 +157,7 @@ class Reconstruction:
         """
         if self._polygons is None:
             self._polygons = _core.polygons(
-                np.require(self.points, dtype=np.float64, requirements=["C", "A"]),
+                np.require(self.vertices, dtype=np.float64, requirements=["C", "A"]),
                 np.require(self._fields["loop_vertices"], dtype=np.int64, requirements=["A"]),
                 np.require(self._fields["loop_offsets"], dtype=np.int64, requirements=["A"]),
             )

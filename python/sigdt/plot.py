@@ -31,7 +31,7 @@ def plot(rec: Reconstruction, ax: Any = None, **style: Any) -> Any:
     if ax is None:
         _, ax = plt.subplots()
     pts = rec.points
-    rings = [pts[loop] for loop in rec.loops]
+    rings = [rec.vertices[loop] for loop in rec.loops]
     for shell, holes in rec.polygons:
         # Holes clockwise against the counter-clockwise shell: a hole under either fill rule.
         parts = [rings[shell]] + [rings[h][::-1] for h in holes]
@@ -42,7 +42,7 @@ def plot(rec: Reconstruction, ax: Any = None, **style: Any) -> Any:
         patch = PathPatch(Path(vertices, codes), color=style.get("fill", "#dbe9f6"), zorder=0)
         ax.add_patch(patch)
     if len(rec.edges):
-        segments = pts[rec.edges]
+        segments = rec.vertices[rec.edges]
         ax.add_collection(
             LineCollection(
                 segments,

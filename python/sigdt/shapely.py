@@ -13,7 +13,7 @@ __all__ = ["from_shapely", "to_geojson", "to_shapely"]
 
 
 def _rings(rec: Reconstruction) -> list[np.ndarray]:
-    return [rec.points[loop] for loop in rec.loops]
+    return [rec.vertices[loop] for loop in rec.loops]
 
 
 def to_shapely(rec: Reconstruction) -> Any:
@@ -29,7 +29,7 @@ def to_shapely(rec: Reconstruction) -> Any:
     polygons = [
         shapely.Polygon(rings[shell], [rings[h] for h in holes]) for shell, holes in rec.polygons
     ]
-    lines = [rec.points[p] for p in rec.paths]
+    lines = [rec.vertices[p] for p in rec.paths]
     if len(polygons) == 1 and not lines:
         return polygons[0]
     if polygons and not lines:
@@ -56,7 +56,7 @@ def to_geojson(rec: Reconstruction) -> dict[str, Any]:
     with status and counts as properties."""
 
     def ring(idx: np.ndarray) -> list[list[float]]:
-        coords = rec.points[idx].tolist()
+        coords = rec.vertices[idx].tolist()
         return coords + coords[:1]
 
     loops, paths = rec.loops, rec.paths
@@ -64,7 +64,7 @@ def to_geojson(rec: Reconstruction) -> dict[str, Any]:
         [ring(loops[shell])] + [ring(loops[h][::-1]) for h in holes]
         for shell, holes in rec.polygons
     ]
-    lines = [rec.points[p].tolist() for p in paths]
+    lines = [rec.vertices[p].tolist() for p in paths]
     geometries = [{"type": "Polygon", "coordinates": p} for p in polygons] + [
         {"type": "LineString", "coordinates": line} for line in lines
     ]
@@ -90,4 +90,5 @@ def to_geojson(rec: Reconstruction) -> dict[str, Any]:
     }
     if len(rec.left_out):
         properties["left_out"] = rec.left_out.tolist()
+        properties["left_out_reasons"] = list(rec.left_out_reasons)
     return {"type": "Feature", "geometry": geometry, "properties": properties}

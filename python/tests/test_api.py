@@ -271,7 +271,7 @@ def test_pickle_is_compact_numpy_arrays():
     assert size < n * (16 + 16 + 8) + 4096, f"pickle of {n} points is {size} bytes"
     constructor, (points, fields) = rec.__reduce__()
     assert constructor is sigdt.Reconstruction and isinstance(points, np.ndarray)
-    arrays = [v for v in fields.values() if not isinstance(v, (str, dict))]
+    arrays = [v for v in fields.values() if isinstance(v, np.ndarray)]
     assert len(arrays) == 7 and all(isinstance(a, np.ndarray) for a in arrays)
     assert all(a.dtype == np.int64 for a in arrays)
 
@@ -437,10 +437,34 @@ def test_methods_and_graph_kinds():
         "discur",
         "peel",
         "emst",
+        "optimal-transport",
     ]
     assert sigdt.GRAPH_KINDS == ["dt", "sig", "sigdt", "sigdt2", "emst", "knn"]
     for method in sigdt.METHODS:
         rec = sigdt.reconstruct(SQUARE, method=method)
         # CRAWL closes no cycle shorter than 6 points, and a spanning tree has no cycle:
-        # for both the square stays an open path.
-        assert rec.status == ("curves" if method in ("crawl", "emst") else "polygon"), method
+        # for both the square stays an open path. OPTIMALTRANSPORT keeps a quarter of the
+        # points: one vertex, no edge.
+        open_ = ("crawl", "emst", "optimal-transport")
+        assert rec.status == ("curves" if method in open_ else "polygon"), method
+        kind = "new" if method == "optimal-transport" else "input"
+        assert rec.vertices_kind == kind, method
+        assert (rec.vertices is rec.points) == (kind == "input"), method
+
+
+def test_optimal_transport_draws_on_its_own_vertices():
+    # Its edges index vertices it placed, not the input: every view must use those.
+    t = np.linspace(0, 2 * np.pi, 200, endpoint=False)
+    circle = np.c_[np.cos(t), np.sin(t)]
+    rec = sigdt.reconstruct(circle, method="optimal-transport")
+    assert rec.vertices_kind == "new"
+    assert rec.vertices.shape[1] == 2 and len(rec.vertices) < len(circle)
+    assert len(rec.edges) and rec.edges.max() < len(rec.vertices)
+    assert np.all(np.abs(np.hypot(*rec.vertices.T) - 1) < 0.05)
+    import shapely
+
+    drawn = shapely.get_coordinates(rec.to_shapely())
+    assert len(drawn) and all((rec.vertices == xy).all(axis=1).any() for xy in drawn)
+    feature = rec.to_geojson()
+    lines = feature["geometry"]["coordinates"]
+    assert all((rec.vertices == xy).all(axis=1).any() for line in lines for xy in line)

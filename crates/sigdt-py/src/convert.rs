@@ -6,7 +6,7 @@ use numpy::{
 use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use sigdt::{Edge, Point, Reconstruction, Status};
+use sigdt::{Edge, Point, Reconstruction, Vertices};
 
 pyo3::create_exception!(
     sigdt,
@@ -116,14 +116,27 @@ pub fn chains_from(
 
 /// The dict `python/sigdt/_result.py` builds a `Reconstruction` from (the `_Reconstruction`
 /// TypedDict of `_core.pyi`): `edges`, `loop_vertices`, `loop_offsets`, `path_vertices`,
-/// `path_offsets` (int64 arrays, chains as by [`chains`]), `status` (its name), `left_out`,
-/// `duplicates` (int64 arrays) and `stats` (a dict of counts).
+/// `path_offsets` (int64 arrays, chains as by [`chains`]), `status` (its name), `left_out`
+/// (int64 indices) with `left_out_reasons` (their reasons' names, same order), `vertices`
+/// (`"input"`, `"moved"` or `"new"`) with `positions` (the `(k, 2)` float64 coordinates the
+/// edges index, or `None` for the input points), `duplicates` (int64 array) and `stats` (a
+/// dict of counts).
 pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bound<'py, PyDict>> {
     let (loop_vertices, loop_offsets) = chains(py, &rec.loops);
     let (path_vertices, path_offsets) = chains(py, &rec.paths);
-    let left_out: &[usize] = match &rec.status {
-        Status::SculptingStuck { left_out } => left_out,
-        _ => &[],
+    let left_out: Vec<usize> = rec.left_out.iter().map(|l| l.index).collect();
+    let reasons: Vec<&str> = rec.left_out.iter().map(|l| l.reason.name()).collect();
+    let (kind, positions) = match &rec.vertices {
+        Vertices::Input => ("input", None),
+        Vertices::Moved(p) => ("moved", Some(p)),
+        Vertices::New(p) => ("new", Some(p)),
+    };
+    let positions = match positions {
+        Some(p) => {
+            let flat: Vec<f64> = p.iter().flat_map(|q| [q[0], q[1]]).collect();
+            Some(flat.into_pyarray(py).reshape([p.len(), 2])?)
+        }
+        None => None,
     };
     let s = &rec.stats;
     let stats = PyDict::new(py);
@@ -147,7 +160,10 @@ pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bo
     dict.set_item("path_vertices", path_vertices)?;
     dict.set_item("path_offsets", path_offsets)?;
     dict.set_item("status", rec.status.name())?;
-    dict.set_item("left_out", indices(py, left_out))?;
+    dict.set_item("left_out", indices(py, &left_out))?;
+    dict.set_item("left_out_reasons", reasons)?;
+    dict.set_item("vertices", kind)?;
+    dict.set_item("positions", positions)?;
     dict.set_item("duplicates", edges(py, &rec.duplicates)?)?;
     dict.set_item("stats", stats)?;
     Ok(dict)
