@@ -8,12 +8,12 @@
 //! SIG-AUTO closes a gap only when it is at most [`JOIN_RATIO`] (2, the `u < 2` of the
 //! paper's Theorem 1) times the longest sample spacing next to it; the same ratio decides
 //! where a loop is cut open. This example replaces that ratio (in all three places, through
-//! `sig_auto_with_join_ratio`) and counts exact reconstructions per category of the
+//! `sig_auto_with`) and counts exact reconstructions per category of the
 //! labelled folder `DATA_DIR` (default the repository's `data/curves`: `index.csv`,
 //! `NAME.xy`, `NAME.gt`), plus a `manifold eps<1` row. A smaller ratio keeps more open curves
 //! open and closes fewer closed ones; the table shows how much of each a ratio buys. With
 //! `--list CATEGORY`, the cases of that category that no ratio reconstructs go to stderr.
-use sigdt::internals::{sig_auto_with_join_ratio, JOIN_RATIO};
+use sigdt::internals::{sig_auto_with, SigAutoSteps, JOIN_RATIO};
 use sigdt::Triangulation;
 use sigdt_lab::dataset::{data_dir, read_index};
 use sigdt_lab::eval::is_exact;
@@ -65,7 +65,10 @@ fn main() -> Result<(), Box<dyn Error>> {
         let dt = Triangulation::new(&points)?;
         let exact: Vec<bool> = ratios
             .iter()
-            .map(|&r| is_exact(&sig_auto_with_join_ratio(&dt, r).edges, &truth))
+            .map(|&r| {
+                let steps = SigAutoSteps { join_ratio: r, ..SigAutoSteps::default() };
+                is_exact(&sig_auto_with(&dt, &steps).edges, &truth)
+            })
             .collect();
         let mut labels = vec![category.to_string()];
         if category == "manifold" && eps < 1.0 {

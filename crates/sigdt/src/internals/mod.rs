@@ -22,7 +22,7 @@ pub use crate::proximity::emst::{emst_mask, minimum_spanning_forest};
 pub use crate::proximity::kdtree::KdTree;
 pub use crate::proximity::leaf_elimination::eliminate_leaves;
 pub use crate::proximity::sigdt::sigdt_mask;
-pub use crate::sig_auto::{sig_auto_with_join_ratio, JOIN_RATIO};
+pub use crate::sig_auto::{sig_auto_with, Steps as SigAutoSteps, JOIN_RATIO};
 pub use crate::sig_connect2d::initial_graph;
 pub use spade_reference::{spade_reference, FlatArrays};
 pub use testing::{check_reconstruction, filter_edges, first_crossing};

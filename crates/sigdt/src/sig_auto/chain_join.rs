@@ -30,7 +30,7 @@ use crate::proximity::sigdt::TIE_SLACK;
 
 /// The largest accepted ratio of a join to the longest edge of the chains it joins: the
 /// `u < 2` of \[MOW22\] Theorem 1. SIG-AUTO always uses it; other values exist only for
-/// studying the bound (`examples/join_ratio_sweep.rs`, `docs/sig-auto.md`).
+/// studying the bound (`sigdt-lab/examples/join_ratio_sweep.rs`, `docs/sig-auto.md`).
 pub const JOIN_RATIO: f64 = 2.0;
 
 /// Open chains over the vertices of a triangulation, and the joins made between them.

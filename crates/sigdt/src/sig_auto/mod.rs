@@ -61,6 +61,7 @@ mod outliers;
 mod reading;
 mod spanning_forests;
 mod spur_path;
+mod steps;
 
 use crate::delaunay::Triangulation;
 use crate::geometry::distance;
@@ -77,6 +78,8 @@ use closed_component::closed_component;
 use continuation::MAX_SAMPLED_TURN;
 use reading::Reading;
 use spanning_forests::Forests;
+#[doc(hidden)]
+pub use steps::Steps;
 
 /// The most rounds of outlier removal: later rounds still read their points, they only no
 /// longer look for tree branches to leave out. A safety bound for adversarial input; on the
@@ -85,14 +88,15 @@ pub const MAX_ROUNDS: usize = 16;
 
 /// Reconstructs `dt`'s points with SIG-AUTO (see the module docs).
 pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
-    sig_auto_with_join_ratio(dt, JOIN_RATIO)
+    sig_auto_with(dt, &Steps::default())
 }
 
-/// SIG-AUTO with another ratio in place of [`JOIN_RATIO`] in all three places it bounds a
-/// gap: chain joins, loop cutting and the leaf-edge check. Not a user parameter: it exists
-/// so that the choice of the bound can be measured (`examples/join_ratio_sweep.rs`).
+/// SIG-AUTO with some of its steps switched off or another gap ratio ([`Steps`]). Not a
+/// user parameter: it exists so that each step can be measured
+/// (`sigdt-lab/examples/sig_auto_ablation.rs`, `sigdt-lab/examples/join_ratio_sweep.rs`).
 #[doc(hidden)]
-pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstruction {
+pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
+    let join_ratio = steps.join_ratio;
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
@@ -119,8 +123,8 @@ pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstr
             }
             None => {
                 let forests = Forests::new(sub);
-                let found = if round + 1 < MAX_ROUNDS {
-                    branches_far_off(sub, &forests)
+                let found = if round + 1 < MAX_ROUNDS && steps.branch_outliers {
+                    branches_far_off(sub, &forests, steps)
                 } else {
                     Vec::new()
                 };
@@ -135,8 +139,10 @@ pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstr
             }
         };
         let mut reading = Reading::new(sub, &read.pairs);
-        let cut: Vec<u32> =
-            outliers::detour_outliers(&mut reading).into_iter().map(whole).collect();
+        let cut: Vec<u32> = match steps.detours {
+            true => outliers::detour_outliers(&mut reading, steps).into_iter().map(whole).collect(),
+            false => Vec::new(),
+        };
         if !cut.is_empty() && round + 1 < MAX_ROUNDS {
             // Read the rest again: without the detours, the components are cleaner.
             let gone: std::collections::HashSet<u32> = cut.iter().copied().collect();
@@ -145,7 +151,9 @@ pub fn sig_auto_with_join_ratio(dt: &Triangulation, join_ratio: f64) -> Reconstr
             continue;
         }
         outliers.extend(cut);
-        continuation::continue_smoothly(&mut reading);
+        if steps.continuation {
+            continuation::continue_smoothly(&mut reading);
+        }
         let zigzags = reading.zigzags(MAX_SAMPLED_TURN.cos());
         let pairs: Vec<[u32; 2]> =
             reading.pairs().into_iter().map(|[a, b]| [whole(a), whole(b)]).collect();
@@ -169,12 +177,13 @@ struct Read {
 }
 
 /// The branches of every component's SIGDT2 spanning tree that are outliers.
-fn branches_far_off(dt: &Triangulation, forests: &Forests) -> Vec<u32> {
+fn branches_far_off(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Vec<u32> {
     let tree = &forests.sigdt2;
     let mut found = Vec::new();
     for (vertices, branched) in forests.components() {
         if branched {
-            found.extend(outliers::branch_outliers(dt, &vertices, |v| tree.neighbours(v).to_vec()));
+            let neighbours = |v: u32| tree.neighbours(v).to_vec();
+            found.extend(outliers::branch_outliers(dt, &vertices, neighbours, steps));
         }
     }
     found
@@ -346,12 +355,13 @@ mod tests {
         {
             let points = sample(slots);
             let dt = Triangulation::new(&points).unwrap();
-            let rec = sig_auto_with_join_ratio(&dt, ratio);
+            let rec = sig_auto_with(&dt, &Steps { join_ratio: ratio, ..Steps::default() });
             check_reconstruction(&points, &rec).unwrap();
             assert_eq!(rec.loops.len() == 1, closed, "{slots} slots, ratio {ratio}");
         }
         let dt = Triangulation::new(&sample(31)).unwrap();
-        assert_eq!(sig_auto_on(&dt), sig_auto_with_join_ratio(&dt, JOIN_RATIO));
+        let ratio_2 = Steps { join_ratio: JOIN_RATIO, ..Steps::default() };
+        assert_eq!(sig_auto_on(&dt), sig_auto_with(&dt, &ratio_2));
     }
 
     #[test]

@@ -27,8 +27,9 @@
 //! first vertex within the spacing, so O(n · degree) per pass over the reading on curve
 //! input; a cut shortens the reading, so at most `n` cuts.
 use super::reading::{Reading, NONE};
+use super::Steps;
 use crate::delaunay::Triangulation;
-use crate::geometry::{distance, ray_distance, segment_distance, squared_distance};
+use crate::geometry::{distance, ray_distance, segment_distance, squared_distance, Point};
 use crate::proximity::sigdt::TIE_SLACK;
 use std::collections::HashMap;
 
@@ -38,7 +39,9 @@ pub(crate) fn branch_outliers(
     dt: &Triangulation,
     vertices: &[u32],
     neighbours: impl Fn(u32) -> Vec<u32>,
+    steps: &Steps,
 ) -> Vec<u32> {
+    let ray = |q, from, through| continuation_distance(steps, q, from, through);
     let path = main_path(dt, vertices, &neighbours);
     let position: HashMap<u32, usize> = path.iter().enumerate().map(|(i, &v)| (v, i)).collect();
     let mut in_branch = vec![false; dt.num_vertices()];
@@ -69,7 +72,7 @@ pub(crate) fn branch_outliers(
             let (q, pa) = (dt.point(o), dt.point(a));
             let near = sides.iter().map(|&s| {
                 let ps = dt.point(s);
-                segment_distance(q, pa, ps).min(ray_distance(q, ps, pa))
+                segment_distance(q, pa, ps).min(ray(q, ps, pa))
             });
             near.fold(distance(q, pa), f64::min)
         };
@@ -77,13 +80,22 @@ pub(crate) fn branch_outliers(
         let inner = longest_inner_edge(dt, &members, &neighbours);
         if spacing > 0.0
             && nearest > spacing * (1.0 + TIE_SLACK)
-            && !own_curve(members.len(), inner, nearest)
+            && !(steps.own_curves && own_curve(members.len(), inner, nearest))
         {
             outliers.extend(members);
         }
     }
     outliers.sort_unstable();
     outliers
+}
+
+/// The distance from `q` to the ray from `through` away from `from` (the straight
+/// continuation of the curve `from → through`), or infinity without tangent rays.
+fn continuation_distance(steps: &Steps, q: Point, from: Point, through: Point) -> f64 {
+    match steps.tangent_rays {
+        true => ray_distance(q, from, through),
+        false => f64::INFINITY,
+    }
 }
 
 /// The longest tree edge between two members of a branch (0 for a single vertex).
@@ -147,7 +159,7 @@ fn main_path(
 
 /// Cuts every detour of the reading (rule 2 of the module docs), farthest first, and
 /// returns the vertices cut out.
-pub(crate) fn detour_outliers(reading: &mut Reading<'_>) -> Vec<u32> {
+pub(crate) fn detour_outliers(reading: &mut Reading<'_>, steps: &Steps) -> Vec<u32> {
     let dt = reading.dt;
     let mut outliers = Vec::new();
     loop {
@@ -168,7 +180,7 @@ pub(crate) fn detour_outliers(reading: &mut Reading<'_>) -> Vec<u32> {
             // beyond `a` (on a smooth curve it lies near it: most vertices stop here).
             let beyond = reading.other(a, first);
             let (pa, pb) = (reading.point(a), reading.point(beyond));
-            if ray_distance(reading.point(first), pb, pa) <= distance(pa, pb) {
+            if continuation_distance(steps, reading.point(first), pb, pa) <= distance(pa, pb) {
                 continue;
             }
             for h in dt.incident(a) {
@@ -176,7 +188,7 @@ pub(crate) fn detour_outliers(reading: &mut Reading<'_>) -> Vec<u32> {
                 if squared(b) >= reach || reading.degree(b) != 2 || reading.joined(a, b) {
                     continue;
                 }
-                if let Some((margin, _)) = detour(reading, a, first, b) {
+                if let Some((margin, _)) = detour(reading, steps, a, first, b) {
                     found.push((margin, a, first, b));
                 }
             }
@@ -187,7 +199,8 @@ pub(crate) fn detour_outliers(reading: &mut Reading<'_>) -> Vec<u32> {
         found.sort_by(|x, y| y.0.total_cmp(&x.0).then((x.1, x.2, x.3).cmp(&(y.1, y.2, y.3))));
         for (_, a, first, b) in found {
             let still = reading.joined(a, first) && reading.degree(b) == 2;
-            let Some((_, run)) = still.then(|| detour(reading, a, first, b)).flatten() else {
+            let Some((_, run)) = still.then(|| detour(reading, steps, a, first, b)).flatten()
+            else {
                 continue;
             };
             let last = run[run.len() - 1];
@@ -205,7 +218,14 @@ pub(crate) fn detour_outliers(reading: &mut Reading<'_>) -> Vec<u32> {
 
 /// The run from `a` through `first` to `b`, and by how much its nearest vertex exceeds the
 /// spacing (a ratio above 1), if it is a detour.
-fn detour(reading: &Reading<'_>, a: u32, first: u32, b: u32) -> Option<(f64, Vec<u32>)> {
+fn detour(
+    reading: &Reading<'_>,
+    steps: &Steps,
+    a: u32,
+    first: u32,
+    b: u32,
+) -> Option<(f64, Vec<u32>)> {
+    let ray = |q, from, through| continuation_distance(steps, q, from, through);
     let a_beyond = reading.other(a, first);
     if a_beyond == NONE || a_beyond == b {
         return None;
@@ -216,7 +236,7 @@ fn detour(reading: &Reading<'_>, a: u32, first: u32, b: u32) -> Option<(f64, Vec
     // within the spacing known so far ends the walk, as it could never be cut out.
     let near_a = |v: u32| {
         let q = reading.point(v);
-        segment_distance(q, pa, pb).min(ray_distance(q, pa_beyond, pa))
+        segment_distance(q, pa, pb).min(ray(q, pa_beyond, pa))
     };
     let mut run = Vec::new();
     let (mut previous, mut v) = (a, first);
@@ -243,7 +263,7 @@ fn detour(reading: &Reading<'_>, a: u32, first: u32, b: u32) -> Option<(f64, Vec
     let pb_beyond = reading.point(b_beyond);
     let nearest = run
         .iter()
-        .map(|&o| near_a(o).min(ray_distance(reading.point(o), pb_beyond, pb)))
+        .map(|&o| near_a(o).min(ray(reading.point(o), pb_beyond, pb)))
         .fold(f64::INFINITY, f64::min);
     let inner = run.windows(2).map(|w| reading.length(w[0], w[1])).fold(0.0, f64::max);
     // Along the reading, a run with u < 2 at every inner vertex is sampled like a curve.
@@ -253,7 +273,7 @@ fn detour(reading: &Reading<'_>, a: u32, first: u32, b: u32) -> Option<(f64, Vec
             .all(|w| u_below_2(reading.length(w[0], w[1]), reading.length(w[1], w[2])));
     (continues
         && nearest > spacing * (1.0 + TIE_SLACK)
-        && !own_curve(run.len(), inner, nearest)
+        && !(steps.own_curves && own_curve(run.len(), inner, nearest))
         && !regular)
         .then(|| (nearest / spacing, run))
 }

@@ -1,0 +1,39 @@
+//! Which of SIG-AUTO's steps run. The method runs all of them with the ratio 2; the
+//! switches exist so that what each step buys can be measured
+//! (`sigdt-lab/examples/sig_auto_ablation.rs`, `docs/sig-auto.md`). None is a user
+//! parameter.
+use super::chain_join::JOIN_RATIO;
+
+/// SIG-AUTO's steps, each on or off, and the gap ratio. [`Default`] is the method.
+#[doc(hidden)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Steps {
+    /// The ratio in place of [`JOIN_RATIO`] in all three places it bounds a gap: chain
+    /// joins, loop cutting and the leaf-edge check.
+    pub join_ratio: f64,
+    /// Leave out spanning-tree branches far from the main path (step 1).
+    pub branch_outliers: bool,
+    /// Cut detours out of the reading (step 4).
+    pub detours: bool,
+    /// Good continuation: turning-lowering 2-opt moves (step 5).
+    pub continuation: bool,
+    /// The outlier rules measure the distance to the curve's straight continuations too,
+    /// not only to its segments (what keeps sharp corners in).
+    pub tangent_rays: bool,
+    /// The outlier rules keep three or more points closer to one another than to the curve
+    /// (a curve of their own).
+    pub own_curves: bool,
+}
+
+impl Default for Steps {
+    fn default() -> Self {
+        Steps {
+            join_ratio: JOIN_RATIO,
+            branch_outliers: true,
+            detours: true,
+            continuation: true,
+            tangent_rays: true,
+            own_curves: true,
+        }
+    }
+}
