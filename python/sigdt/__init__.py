@@ -12,10 +12,11 @@ out.
 """
 
 from ._api import proximity_graph, read_points, reconstruct, reconstruct_many
-from ._core import GRAPH_KINDS, METHODS, InternalError, InvalidInputError, ParseError, __version__
+from ._core import GRAPH_KINDS, METHODS, __version__
 from ._eval import evaluate, graph_epsilon, graph_overlap
 from ._result import Reconstruction
 from ._trace import PHASES, Trace, trace
+from .errors import InternalError, InvalidInputError, ParseError, SigdtError, SigdtWarning
 from .plot import plot_steps
 
 __all__ = [
@@ -26,6 +27,8 @@ __all__ = [
     "InvalidInputError",
     "ParseError",
     "Reconstruction",
+    "SigdtError",
+    "SigdtWarning",
     "Trace",
     "__version__",
     "evaluate",

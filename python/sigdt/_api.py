@@ -4,15 +4,32 @@ from __future__ import annotations
 
 import operator
 import os
+import warnings
 from collections.abc import Iterable
 from typing import Any
 
 import numpy as np
 
 from . import _core
-from ._core import InvalidInputError
 from ._input import LEAF_ELIMINATION, _as_points, _check_method
 from ._result import Reconstruction
+from .errors import InvalidInputError, SigdtWarning
+
+#: Statuses that say the result is not a faithful curve: a SigdtWarning names them.
+WARNING_STATUSES = ("sculpting-stuck", "network", "noisy")
+
+
+def _warn_about(results: list[Reconstruction], many: bool) -> None:
+    bad = [(k, r) for k, r in enumerate(results) if r.status in WARNING_STATUSES]
+    if not bad:
+        return
+    k, first = bad[0]
+    where = f"point set {k}" + (f" (and {len(bad) - 1} more)" if len(bad) > 1 else "")
+    what = first._fields["status_message"]
+    # stacklevel 3: the warning points at the caller of reconstruct / reconstruct_many.
+    text = f"{where}: {first.status}: {what}" if many else f"{first.status}: {what}"
+    warnings.warn(text, SigdtWarning, stacklevel=3)
+
 
 __all__ = ["proximity_graph", "read_points", "reconstruct", "reconstruct_many"]
 
@@ -28,8 +45,9 @@ def reconstruct(
     Parameters
     ----------
     points : array_like, shape (n, 2)
-        Anything numpy turns into an ``(n, 2)`` float64 array. A C-contiguous float64
-        array is used without copying.
+        Anything numpy turns into an ``(n, 2)`` real float64 array (kept as
+        ``rec.points``; the extension works on its own copy, so the result depends only on
+        the values at the call).
     method : str, default "sig-connect2d"
         The reconstruction method (see ``sigdt.METHODS``). ``"sig-auto"`` keeps open
         curves open and nested curves separate: closed loops in ``loops``, open curves in
@@ -48,11 +66,18 @@ def reconstruct(
     ------
     InvalidInputError
         Wrong shape, NaN or infinite coordinates, or coordinates spanning more than about
-        2**172. (A subclass of ValueError.)
+        2**172. (A subclass of SigdtError and ValueError.)
     ValueError
         Unknown method.
     TypeError
         ``method`` is not a string.
+
+    Warns
+    -----
+    SigdtWarning
+        The status says the result is not a faithful curve: ``"sculpting-stuck"`` (points
+        left inside), ``"network"`` (edges meet at junctions) or ``"noisy"`` (the edges
+        zigzag). The result is returned all the same.
 
     Examples
     --------
@@ -70,7 +95,9 @@ def reconstruct(
     """
     _check_method(method)
     array = _as_points(points)
-    return Reconstruction(array, _core.reconstruct(array, method, bool(leaf_elimination)))
+    rec = Reconstruction(array, _core.reconstruct(array, method, bool(leaf_elimination)))
+    _warn_about([rec], many=False)
+    return rec
 
 
 def reconstruct_many(
@@ -104,6 +131,12 @@ def reconstruct_many(
     ValueError
         Unknown method, or ``n_jobs`` < 1.
 
+    Warns
+    -----
+    SigdtWarning
+        Once per call when some results are not faithful curves (as in
+        :func:`reconstruct`), naming the first such set and how many more there are.
+
     Examples
     --------
     >>> import sigdt
@@ -127,7 +160,9 @@ def reconstruct_many(
         except InvalidInputError as e:
             raise InvalidInputError(f"point set {k}: {e}") from e
     raws = _core.reconstruct_many(arrays, method, bool(leaf_elimination), n_jobs)
-    return [Reconstruction(a, raw) for a, raw in zip(arrays, raws)]
+    results = [Reconstruction(a, raw) for a, raw in zip(arrays, raws)]
+    _warn_about(results, many=True)
+    return results
 
 
 def proximity_graph(points: Any, kind: str = "sigdt", k: int | None = None) -> np.ndarray:

@@ -18,6 +18,7 @@ _Reconstruction = TypedDict(
         "path_vertices": npt.NDArray[np.int64],
         "path_offsets": npt.NDArray[np.int64],
         "status": str,
+        "status_message": str,
         "left_out": npt.NDArray[np.int64],
         "left_out_reasons": list[str],
         "vertices": str,  # "input", "moved" or "new"
@@ -31,10 +32,6 @@ METHODS: list[str]
 GRAPH_KINDS: list[str]
 PHASES: list[str]
 __version__: str
-
-class InvalidInputError(ValueError): ...
-class ParseError(ValueError): ...
-class InternalError(RuntimeError): ...
 
 class Trace(object):  # noqa: UP004  # the bases mirror the runtime's, as test_docs.py checks
     @property

@@ -7,7 +7,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from ._core import InvalidInputError
+from .errors import InvalidInputError
 
 __all__ = ["LEAF_ELIMINATION"]
 
@@ -17,14 +17,32 @@ LEAF_ELIMINATION = True
 
 
 def _as_points(points: Any) -> np.ndarray:
+    if np.ma.isMaskedArray(points) and np.ma.getmaskarray(points).any():
+        raise InvalidInputError(
+            "points is a masked array with masked values: drop them first "
+            "(points[~points.mask.any(axis=1)].data) or fill them (points.filled(...))"
+        )
     try:
+        given = np.asarray(np.ma.getdata(points))
+        if np.iscomplexobj(given):
+            raise InvalidInputError(
+                "points are complex numbers: pass an (n, 2) real array, for example "
+                "np.c_[z.real, z.imag]"
+            )
         # C-contiguous and aligned (arrays deserialised from message frames, as Dask workers
         # receive them, may be unaligned); copies only when one of these does not hold.
-        array = np.require(points, dtype=np.float64, requirements=["C", "A"])
-    except (TypeError, ValueError) as e:
+        array = np.require(given, dtype=np.float64, requirements=["C", "A"])
+    except (TypeError, ValueError, OverflowError) as e:
+        if isinstance(e, InvalidInputError):
+            raise
         raise InvalidInputError(f"points cannot be read as an (n, 2) float array: {e}") from e
-    if array.size == 0 and array.ndim <= 2:
-        return array.reshape(0, 2)
+    if array.ndim <= 2 and array.size == 0 and array.shape[0] == 0:
+        return array.reshape(0, 2)  # no rows: no points, whatever the width
+    if array.ndim == 2 and array.shape[1] > 2:
+        raise InvalidInputError(
+            f"points must have shape (n, 2), got {array.shape}: select the x and y columns, "
+            "for example points[:, :2]"
+        )
     if array.ndim != 2 or array.shape[1] != 2:
         raise InvalidInputError(f"points must have shape (n, 2), got {array.shape}")
     return array

@@ -3,27 +3,20 @@ use numpy::{
     IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
     PyUntypedArrayMethods,
 };
-use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use sigdt::{Edge, Point, Reconstruction, Vertices};
 
-pyo3::create_exception!(
-    sigdt,
-    InvalidInputError,
-    PyValueError,
-    "The points are unusable: wrong shape, non-finite values, or an impossible range."
-);
-pyo3::create_exception!(sigdt, ParseError, PyValueError, "A point file could not be parsed.");
-pyo3::create_exception!(
-    sigdt,
-    InternalError,
-    PyRuntimeError,
-    "A bug inside sigdt (a Rust panic), reported instead of crashing."
-);
+// The exception classes are Python's (`python/sigdt/errors.py`), so that they can derive
+// from both `SigdtError` and the built-in class a caller expects.
+pyo3::import_exception!(sigdt.errors, InvalidInputError);
+pyo3::import_exception!(sigdt.errors, ParseError);
+pyo3::import_exception!(sigdt.errors, InternalError);
 
-/// The points of an `(n, 2)` C-contiguous float64 array, borrowed without copying.
-pub fn points<'a>(array: &'a PyReadonlyArray2<'_, f64>) -> PyResult<&'a [Point]> {
+/// The points of an `(n, 2)` C-contiguous float64 array, copied: the calls release the GIL,
+/// and another Python thread writing to the array meanwhile must not change the result.
+pub fn points(array: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<Point>> {
     let shape = array.shape();
     if shape[1] != 2 {
         return Err(InvalidInputError::new_err(format!(
@@ -34,7 +27,7 @@ pub fn points<'a>(array: &'a PyReadonlyArray2<'_, f64>) -> PyResult<&'a [Point]>
     let flat = array.as_slice().map_err(|_| {
         InvalidInputError::new_err("points must be a C-contiguous, aligned float64 array")
     })?;
-    Ok(bytemuck::cast_slice(flat))
+    Ok(bytemuck::cast_slice(flat).to_vec())
 }
 
 /// The Python exception for a core error.
@@ -116,7 +109,8 @@ pub fn chains_from(
 
 /// The dict `python/sigdt/_result.py` builds a `Reconstruction` from (the `_Reconstruction`
 /// TypedDict of `_core.pyi`): `edges`, `loop_vertices`, `loop_offsets`, `path_vertices`,
-/// `path_offsets` (int64 arrays, chains as by [`chains`]), `status` (its name), `left_out`
+/// `path_offsets` (int64 arrays, chains as by [`chains`]), `status` (its name) with
+/// `status_message` (what it means, for warnings), `left_out`
 /// (int64 indices) with `left_out_reasons` (their reasons' names, same order), `vertices`
 /// (`"input"`, `"moved"` or `"new"`) with `positions` (the `(k, 2)` float64 coordinates the
 /// edges index, or `None` for the input points), `duplicates` (int64 array) and `stats` (a
@@ -160,6 +154,7 @@ pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bo
     dict.set_item("path_vertices", path_vertices)?;
     dict.set_item("path_offsets", path_offsets)?;
     dict.set_item("status", rec.status.name())?;
+    dict.set_item("status_message", rec.status.to_string())?;
     dict.set_item("left_out", indices(py, &left_out))?;
     dict.set_item("left_out_reasons", reasons)?;
     dict.set_item("vertices", kind)?;

@@ -46,7 +46,7 @@ pub fn evaluate<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let pts = point_slice(&points)?;
     let (edges, gt) = (edge_list(&edges, "edges")?, edge_list(&gt, "gt")?);
-    let m = run(py, || sigdt_lab::eval::evaluate(pts, &edges, &gt))?;
+    let m = run(py, || sigdt_lab::eval::evaluate(&pts, &edges, &gt))?;
     let dict = PyDict::new(py);
     dict.set_item("exact", m.exact)?;
     dict.set_item("missing", m.missing)?;
@@ -68,7 +68,7 @@ pub fn graph_epsilon<'py>(
 ) -> PyResult<f64> {
     let pts = point_slice(&points)?;
     let gt = edge_list(&gt, "gt")?;
-    run(py, || sigdt_lab::eval::graph_epsilon(pts, &gt))
+    run(py, || sigdt_lab::eval::graph_epsilon(&pts, &gt))
 }
 
 /// `graph_overlap(points, gt) -> dict` of fractions (and `contains_*` booleans).
@@ -80,7 +80,7 @@ pub fn graph_overlap<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let pts = point_slice(&points)?;
     let gt = edge_list(&gt, "gt")?;
-    let o = run(py, || sigdt_lab::eval::overlap(pts, &gt))?;
+    let o = run(py, || sigdt_lab::eval::overlap(&pts, &gt))?;
     let dict = PyDict::new(py);
     dict.set_item("sig_in_dt", o.sig_in_dt)?;
     dict.set_item("dt_in_sig", o.dt_in_sig)?;

@@ -1,7 +1,7 @@
 //! Python bindings of `sigdt`, built by maturin as `sigdt._core`.
 //!
-//! This crate only converts types: numpy arrays in (borrowed, not copied, when C-contiguous
-//! float64); numpy arrays, dicts with named keys and the `Trace` class out; core errors to
+//! This crate only converts types: numpy arrays in (copied once, so that a result depends
+//! only on the data at the call while the GIL is released); numpy arrays, dicts with named keys and the `Trace` class out; core errors to
 //! Python exceptions, panics to `InternalError`. The user-facing names, defaults and
 //! docstrings live in `python/sigdt`.
 mod convert;
@@ -31,7 +31,7 @@ fn reconstruct<'py>(
     let options = options(method, leaf_elimination)?;
     let pts = convert::points(&points)?;
     let rec = py
-        .detach(|| guarded(|| sigdt::reconstruct(pts, &options)))
+        .detach(|| guarded(|| sigdt::reconstruct(&pts, &options)))
         .map_err(InternalError::new_err)?
         .map_err(err)?;
     convert::reconstruction(py, &rec)
@@ -116,7 +116,7 @@ fn trace(
     let options = options(method, leaf_elimination)?;
     let pts = convert::points(&points)?;
     let (_, trace) = py
-        .detach(|| guarded(|| sigdt::reconstruct_traced(pts, &options)))
+        .detach(|| guarded(|| sigdt::reconstruct_traced(&pts, &options)))
         .map_err(InternalError::new_err)?
         .map_err(err)?;
     Ok(trace.map(replay::Trace))
@@ -136,7 +136,7 @@ fn polygons(
     let loops = convert::chains_from(&loop_vertices, &loop_offsets, pts.len())?;
     let rec = sigdt::Reconstruction { loops, ..Default::default() };
     let polygons = py
-        .detach(|| guarded(|| Ok(rec.polygons(pts))))
+        .detach(|| guarded(|| Ok(rec.polygons(&pts))))
         .map_err(InternalError::new_err)?
         .map_err(err)?;
     Ok(polygons.into_iter().map(|p| (p.shell, p.holes)).collect())
@@ -154,7 +154,7 @@ fn proximity_graph<'py>(
     let kind = GraphKind::from_name(kind, k).map_err(err)?;
     let pts = convert::points(&points)?;
     let edges = py
-        .detach(|| guarded(|| sigdt::proximity_graph(pts, kind)))
+        .detach(|| guarded(|| sigdt::proximity_graph(&pts, kind)))
         .map_err(InternalError::new_err)?
         .map_err(err)?;
     convert::edges(py, &edges)
@@ -184,9 +184,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(eval::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(eval::graph_epsilon, m)?)?;
     m.add_function(wrap_pyfunction!(eval::graph_overlap, m)?)?;
-    m.add("InvalidInputError", m.py().get_type::<InvalidInputError>())?;
-    m.add("ParseError", m.py().get_type::<ParseError>())?;
-    m.add("InternalError", m.py().get_type::<InternalError>())?;
     m.add_class::<replay::Trace>()?;
     m.add("METHODS", Method::ALL.iter().map(|m| m.name()).collect::<Vec<_>>())?;
     m.add("GRAPH_KINDS", GraphKind::NAMES.to_vec())?;

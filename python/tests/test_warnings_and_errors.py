@@ -1,0 +1,106 @@
+"""The exception hierarchy, SigdtWarning for results that are not faithful curves, and the
+points a method leaves out with their reasons."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+import sigdt
+
+GRID = np.array([[x, y] for x in range(20) for y in range(20)], dtype=float)
+
+
+def circle(n: int = 60) -> np.ndarray:
+    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    return np.c_[np.cos(t), np.sin(t)]
+
+
+@pytest.mark.parametrize(
+    ("name", "builtin"),
+    [
+        ("InvalidInputError", ValueError),
+        ("ParseError", ValueError),
+        ("InternalError", RuntimeError),
+    ],
+)
+def test_every_exception_is_a_sigdt_error_and_its_builtin(name, builtin):
+    cls = getattr(sigdt, name)
+    assert issubclass(cls, sigdt.SigdtError) and issubclass(cls, builtin)
+    assert cls.__module__ == "sigdt.errors"
+
+
+def test_errors_raised_by_the_extension_are_the_exported_classes(tmp_path):
+    with pytest.raises(sigdt.InvalidInputError) as info:
+        sigdt.reconstruct([[0.0, 0.0], [1.0, np.nan], [2.0, 0.0]])
+    assert isinstance(info.value, sigdt.SigdtError)
+    bad = tmp_path / "bad.xy"
+    bad.write_text("0 0\n1 zero\n")
+    with pytest.raises(sigdt.ParseError, match="bad.xy"):
+        sigdt.read_points(bad)
+    with pytest.raises(sigdt.SigdtError, match="point set 1"):
+        sigdt.reconstruct_many([circle(), [[0.0, np.inf], [1.0, 1.0], [2.0, 0.0]]])
+
+
+def test_a_faithful_result_warns_nothing():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert sigdt.reconstruct(circle()).status == "polygon"
+        sigdt.reconstruct_many([circle(), circle(30)])
+
+
+def test_a_stuck_sculpting_warns_and_still_returns_the_result():
+    with pytest.warns(sigdt.SigdtWarning, match=r"^sculpting-stuck: sculpting got stuck") as rec:
+        result = sigdt.reconstruct(GRID)
+    assert result.status == "sculpting-stuck" and len(result.left_out)
+    assert set(result.left_out_reasons) == {"inside"}
+    assert rec[0].filename == __file__  # points at the caller, not into sigdt
+
+
+def test_reconstruct_many_warns_once_naming_the_first_set():
+    with pytest.warns(sigdt.SigdtWarning) as caught:
+        sigdt.reconstruct_many([circle(), GRID, GRID])
+    assert len(caught) == 1
+    assert str(caught[0].message).startswith("point set 1 (and 1 more): sculpting-stuck")
+
+
+def test_sig_auto_leaves_a_far_outlier_out_with_its_reason():
+    points = np.r_[circle(80), [[0.0, 0.0]]]  # the centre: far from the curve
+    rec = sigdt.reconstruct(points, method="sig-auto")
+    assert rec.status == "polygon", rec.status
+    assert rec.left_out.tolist() == [80] and rec.left_out_reasons == ["outlier"]
+    assert 80 not in rec.edges
+    feature = rec.to_geojson()
+    assert feature["properties"]["left_out"] == [80]
+    assert feature["properties"]["left_out_reasons"] == ["outlier"]
+    # The polygon leaves the outlier out: it is the circle alone.
+    assert len(rec.loops) == 1 and len(rec.loops[0]) == 80
+
+
+@pytest.mark.parametrize(
+    ("points", "message"),
+    [
+        (np.array([1 + 2j, 3 + 4j, 5 + 0j]), "complex"),
+        (np.zeros((5, 0)), r"shape \(n, 2\), got \(5, 0\)"),
+        (np.zeros((1, 0)), r"got \(1, 0\)"),
+        (np.zeros((4, 3)), r"points\[:, :2\]"),
+        ([[10**400, 0], [1, 1], [2, 0]], "cannot be read"),
+        ([[0, 0], [1, 1, 1]], "cannot be read"),
+        (
+            np.ma.masked_array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]], mask=[[0, 0], [0, 1], [0, 0]]),
+            "masked",
+        ),
+    ],
+)
+def test_input_that_would_lose_information_is_refused(points, message):
+    with pytest.raises(sigdt.InvalidInputError, match=message):
+        sigdt.reconstruct(points)
+
+
+def test_input_that_loses_nothing_is_read():
+    square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+    unmasked = np.ma.masked_array(square, mask=False)
+    assert sigdt.reconstruct(unmasked) == sigdt.reconstruct(square)
+    assert sigdt.reconstruct([]).status == "too-few-points"
+    assert sigdt.reconstruct(np.zeros((0, 2))).status == "too-few-points"
