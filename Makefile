@@ -100,15 +100,20 @@ bench-python: py-build build
 	$(VPY) python/bench/bench_python.py
 
 ## report: the side-by-side evaluation in docs/report/ (issue 4): every method and
-## shapely.concave_hull on data/curves (or DATA=...), then the noise, outlier,
-## lfs-noise and eps sweeps. Takes a few minutes on 2 cores.
+## shapely.concave_hull on data/curves (or DATA=...) and on the real shapes of data/real
+## (docs/report/real/), then the noise, outlier, lfs-noise and eps sweeps. Takes about ten
+## minutes on 2 cores.
 DATA ?= data/curves
+REAL := data/real
 REPORT := docs/report
 SWEEPS := $(TARGET_DIR)/sweeps
 report: build py-build
-	rm -rf $(TARGET_DIR)/concave-hull $(SWEEPS)
+	rm -rf $(TARGET_DIR)/concave-hull $(TARGET_DIR)/concave-hull-real $(SWEEPS)
 	$(VPY) -m sigdt.baselines $(DATA) $(TARGET_DIR)/concave-hull
 	$(SIGDT) bench $(DATA) --out $(REPORT) --import concave-hull=$(TARGET_DIR)/concave-hull
+	$(VPY) -m sigdt.baselines $(REAL) $(TARGET_DIR)/concave-hull-real
+	$(SIGDT) bench $(REAL) --out $(REPORT)/real \
+	  --import concave-hull=$(TARGET_DIR)/concave-hull-real
 	$(SIGDT) sweep noise $(DATA) --out $(SWEEPS)/noise --jobs 2
 	$(SIGDT) sweep outliers $(DATA) --out $(SWEEPS)/outliers --jobs 2
 	$(SIGDT) sweep lfs-noise data/svg/simple.svg --out $(SWEEPS)/lfs-noise --jobs 2
