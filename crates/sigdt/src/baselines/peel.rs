@@ -35,7 +35,9 @@
 //!   `G`-neighbours of both `a` and `b` (other than `b`, `a`) whose distance *from `b`* is
 //!   below `|ab|`. [`peel`] reproduces that count, since it is what the authors' program
 //!   computes. Counting at `b` only `b`'s own neighbours, the evident intent, changes results
-//!   on the labelled curves (`docs/evaluation.md`).
+//!   on the labelled curves (`docs/evaluation.md`). The reference's `a` is whichever end
+//!   CGAL's edge iterator names first; here `a` is the end with the lexicographically
+//!   smaller point `(x, y)`, so that the result does not depend on the input order.
 //!
 //! [PMM18]: https://github.com/amaldevp/Peeling_the_Longest
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
@@ -67,7 +69,12 @@ fn peel_with(dt: &Triangulation, reference_count: bool) -> Vec<[u32; 2]> {
     };
     let mut edges = Vec::new();
     for h in dt.edge_halfedges().filter(|&h| graph.contains(h)) {
-        let (a, b) = (dt.origin(h), dt.dest(h));
+        // The count is asymmetric, so which end is `a` matters: the lexicographically
+        // smaller point, not the half-edge's origin, which depends on the input order.
+        let (a, b) = match dt.point(dt.origin(h)) < dt.point(dt.dest(h)) {
+            true => (dt.origin(h), dt.dest(h)),
+            false => (dt.dest(h), dt.origin(h)),
+        };
         let len = d2(a, b);
         let at_a = shorter(a, b, a, len);
         let mut at_b = shorter(b, a, b, len);

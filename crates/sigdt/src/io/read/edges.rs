@@ -4,7 +4,7 @@ use std::fs::File;
 use std::io::{BufRead, BufReader};
 use std::path::Path;
 
-use super::lines::{pair, Lines};
+use super::lines::{pair, quoted, Lines};
 use crate::error::{Error, Result};
 use crate::geometry::Edge;
 
@@ -29,7 +29,7 @@ pub fn parse_edges<R: BufRead>(reader: R, name: &str) -> Result<Vec<Edge>> {
 /// An edge line: exactly two distinct non-negative integers, returned as `[min, max]`.
 fn edge(line: &str) -> Result<Edge, String> {
     let index = |field: &str| {
-        let not_index = format!("'{field}' is not a point index (a non-negative integer)");
+        let not_index = format!("{} is not a point index (a non-negative integer)", quoted(field));
         field.parse::<usize>().map_err(|_| not_index)
     };
     match pair(line, "indices (i j)", index)? {

@@ -3,7 +3,7 @@
 
 use std::io::BufRead;
 
-use super::lines::{coordinate, too_many, Lines};
+use super::lines::{coordinate, quoted, too_many, Lines};
 use crate::error::Result;
 use crate::geometry::Point;
 
@@ -42,9 +42,9 @@ pub(super) fn is_gtn_header(line: &str) -> bool {
 fn gtn_header(line: &str) -> Result<usize, String> {
     let (mut n, mut count) = (0, 0);
     for token in line.split_ascii_whitespace() {
-        let v: i64 = token
-            .parse()
-            .map_err(|_| format!("gtn header: '{token}' is not an integer (expected 'N 2 0 0')"))?;
+        let v: i64 = token.parse().map_err(|_| {
+            format!("gtn header: {} is not an integer (expected 'N 2 0 0')", quoted(token))
+        })?;
         match count {
             0 => {
                 n = usize::try_from(v)
@@ -70,7 +70,7 @@ fn gtn_point(line: &str, expected: usize) -> Result<Point, String> {
             0 => match token.parse::<usize>() {
                 Ok(index) if index == expected => {}
                 Ok(index) => return Err(format!("expected point index {expected}, found {index}")),
-                Err(_) => return Err(format!("'{token}' is not a point index")),
+                Err(_) => return Err(format!("{} is not a point index", quoted(token))),
             },
             1 | 2 => p[count - 1] = coordinate(token)?,
             _ => {}

@@ -47,7 +47,14 @@ impl<'a, R: BufRead> Lines<'a, R> {
             }
         }
         self.unread = false;
-        match std::str::from_utf8(&self.buf[self.content.clone()]) {
+        let bytes = &self.buf[self.content.clone()];
+        if bytes.contains(&0) {
+            // UTF-16 text without a byte-order mark (or a binary file) reads as NUL bytes
+            // between characters; showing them would say nothing.
+            let message = "line has NUL bytes: UTF-16 or binary data? Save it as UTF-8 text";
+            return Err(self.error(message.to_string()));
+        }
+        match std::str::from_utf8(bytes) {
             Ok(line) => Ok(Some(line)),
             Err(_) => Err(self.error("line is not valid UTF-8".to_string())),
         }
@@ -141,10 +148,48 @@ pub(super) fn pair<T: Copy + Default>(
 pub(super) fn coordinate(field: &str) -> Result<f64, String> {
     match field.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(format!("coordinate '{field}' is not finite")),
+        Ok(_) => Err(format!("coordinate {} is not finite", quoted(field))),
         Err(_) if field.is_empty() => Err("empty field between commas".to_string()),
-        Err(_) => Err(format!("'{field}' is not a number")),
+        Err(_) => Err(not_a_number(field)),
     }
+}
+
+/// Why `field` is not a number, naming an unsupported separator inside it if it has one.
+pub(super) fn not_a_number(field: &str) -> String {
+    let separator = field.chars().find(|&c| c.is_whitespace() || matches!(c, ';' | '|'));
+    match separator {
+        Some(c) => format!(
+            "{} is not a number: unsupported separator {} (use spaces, tabs or one comma)",
+            quoted(field),
+            c.escape_unicode()
+        ),
+        None => format!("{} is not a number", quoted(field)),
+    }
+}
+
+/// The most characters of an input token an error message shows.
+const SHOWN_CHARS: usize = 40;
+
+/// `token` as an error message shows it: in single quotes, control and other invisible
+/// characters escaped (a crafted file cannot drive the terminal), cut after
+/// [`SHOWN_CHARS`] characters.
+pub(crate) fn quoted(token: &str) -> String {
+    let mut shown = String::from("'");
+    for (k, c) in token.chars().enumerate() {
+        if k == SHOWN_CHARS {
+            shown.push_str(&format!("...' ({} characters)", token.chars().count()));
+            return shown;
+        }
+        match c {
+            c if c.is_control() || c.is_whitespace() && c != ' ' => {
+                shown.extend(c.escape_unicode())
+            }
+            '\'' | '\\' => shown.extend(c.escape_default()),
+            c => shown.push(c),
+        }
+    }
+    shown.push('\'');
+    shown
 }
 
 /// The fields of a plain line: comma-separated (each trimmed) if it has a comma, else

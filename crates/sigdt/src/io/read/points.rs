@@ -7,7 +7,7 @@
 //!
 //! - **Plain**: one point a line, two numbers separated by spaces or tabs, or by one comma
 //!   with optional spaces around it (`1.5 2`, `1.5,2`, `1.5, 2`). The first line may be a
-//!   header if none of its fields is a number (`x,y`).
+//!   header: a line of names (`x,y`), each with a letter and none starting like a number.
 //! - **Gtn** (Dey's CurveRecon): a header `N 2 0 0`, then exactly `N` lines `index x y`
 //!   with indices `0, 1, ..., N-1` in order.
 //! - **Edges**: one edge a line, two point indices `i j` (ground-truth files).
@@ -126,9 +126,17 @@ fn xy(line: &str) -> Result<Point, String> {
     pair(line, "numbers (x y)", coordinate)
 }
 
-/// Whether a plain line is a header: none of its fields is a number.
+/// Whether a plain line is a header: a line of names. Every field has a letter and none
+/// starts like a number (a digit of any script, or a sign or point before one), so that
+/// `0x1p3`, `1_000` or full-width digits are errors, not a header that silently drops a
+/// point.
 fn is_header(line: &str) -> bool {
-    fields(line).all(|field| field.parse::<f64>().is_err())
+    let name = |field: &str| {
+        let unsigned = field.trim_start_matches(['+', '-']).trim_start_matches('.');
+        let numeric_start = unsigned.chars().next().is_some_and(char::is_numeric);
+        field.chars().any(char::is_alphabetic) && !numeric_start && field.parse::<f64>().is_err()
+    };
+    fields(line).all(name)
 }
 
 #[cfg(test)]
@@ -180,9 +188,51 @@ mod tests {
             assert_eq!(error(parse(text, format)), expected, "{text:?}");
         }
         let latin1 = parse_points(&b"0 0\n1 \xE9\n"[..], "t.xy", None);
+        let utf16 = parse_points(&b"0\x00 \x000\x00\n\x00"[..], "t.xy", None);
+        assert!(error(utf16).starts_with("1: line has NUL bytes: UTF-16"));
         assert_eq!(error(latin1), "2: line is not valid UTF-8");
         let comment = parse_points(&b"0 0 # caf\xE9\n"[..], "t.xy", None);
         assert_eq!(comment.unwrap(), vec![[0.0, 0.0]]);
+    }
+
+    #[test]
+    fn a_first_line_that_starts_like_a_number_is_an_error_not_a_header() {
+        // Each would drop the first point silently if taken for a header.
+        let cases = [
+            ("0x1p3 2\n0 0\n", "1: '0x1p3' is not a number"),
+            ("1_000 2_000\n0 0\n", "1: '1_000' is not a number"),
+            ("\u{ff11} \u{ff12}\n0 0\n", "1: '\u{ff11}' is not a number"),
+            ("-.5e 1\n0 0\n", "1: '-.5e' is not a number"),
+            (
+                "1.5;2.5\n0 0\n",
+                "1: '1.5;2.5' is not a number: unsupported separator \\u{3b} \
+                 (use spaces, tabs or one comma)",
+            ),
+        ];
+        for (text, expected) in cases {
+            assert_eq!(error(parse(text, None)), expected, "{text:?}");
+        }
+        for header in ["x y", "lon,lat", "X coordinate, Y coordinate", "x1 y1", "\u{3b1} \u{3b2}"] {
+            let text = format!("{header}\n0 0\n");
+            assert_eq!(parse(&text, None).unwrap(), vec![[0.0, 0.0]], "{header}");
+        }
+    }
+
+    #[test]
+    fn messages_escape_what_the_input_could_use_against_a_terminal() {
+        let nbsp = error(parse("1\u{a0}2\n", None));
+        assert_eq!(
+            nbsp,
+            "1: '1\\u{a0}2' is not a number: unsupported separator \\u{a0} \
+             (use spaces, tabs or one comma)"
+        );
+        let vt = error(parse("0 0\n1\u{b}2\n", None));
+        assert!(vt.starts_with("2: '1\\u{b}2' is not a number: unsupported separator"), "{vt}");
+        let escape = error(parse("0 0\n\u{1b}[2J\u{7} 1\n", None));
+        assert_eq!(escape, "2: '\\u{1b}[2J\\u{7}' is not a number");
+        assert!(!escape.contains('\u{1b}'));
+        let long = error(parse(&format!("0 {}\n", "9".repeat(400) + "x"), None));
+        assert_eq!(long, format!("1: '{}...' (401 characters) is not a number", "9".repeat(40)));
     }
 
     #[test]
