@@ -70,7 +70,7 @@ pub fn measure(
     repeat: usize,
 ) -> Result<Run> {
     let pts = sigdt::io::read_points(points)?;
-    let gt = sigdt::io::read_edges(gt)?;
+    let gt = sigdt::io::read_edges_of(gt, pts.len())?;
     let clean = truth.map(sigdt::io::read_points).transpose()?;
     let run = || sigdt::reconstruct(&pts, options);
     let start = Instant::now();

@@ -29,9 +29,9 @@ pub struct EvalArgs {
 /// `sigdt eval`.
 pub fn run(args: &EvalArgs, input: &Input) -> Result<()> {
     let points = input.points(&args.input)?;
-    let gt = sigdt::io::read_edges(&args.gt)?;
+    let gt = sigdt::io::read_edges_of(&args.gt, points.len())?;
     let (label, edges) = match &args.edges {
-        Some(file) => (file.display().to_string(), sigdt::io::read_edges(file)?),
+        Some(file) => (file.display().to_string(), sigdt::io::read_edges_of(file, points.len())?),
         None => {
             let options = Options { method: args.method, ..Options::default() };
             (args.method.to_string(), sigdt::reconstruct(&points, &options)?.edges)

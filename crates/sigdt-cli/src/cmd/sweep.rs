@@ -170,7 +170,7 @@ fn generate(args: &SweepArgs, level: f64, k: u64) -> Result<Vec<(String, Labelle
             for (i, case) in cases.iter().enumerate() {
                 let files = case.row.files(&args.source);
                 let clean = sigdt::io::read_points(&files.points)?;
-                let gt = sigdt::io::read_edges(&files.gt)?;
+                let gt = sigdt::io::read_edges_of(&files.gt, clean.len())?;
                 let labelled = if args.kind == SweepKind::Noise {
                     let points = sigdt::samplers::uniform_noise(&clean, level, seed(i))?;
                     Labelled { points, gt, truth: Some(clean) }

@@ -30,3 +30,38 @@ fn an_overlong_line_on_a_pipe_is_refused_without_reading_it_whole() {
     sigdt_in(tempdir().path(), &["reconstruct", "-"], Some(&line))
         .error(&["<stdin>:1:", "longer than"]);
 }
+
+#[test]
+fn edge_files_stop_at_the_first_line_past_what_a_graph_on_the_points_can_have() {
+    let dir = tempdir();
+    write_points(dir.path(), "sq.xy", &square());
+    std::fs::write(dir.path().join("ok.gt"), edges_text(&cycle_edges(4))).unwrap();
+    // 13 edges on 4 points: more than the 3n = 12 a graph without crossings can have.
+    std::fs::write(dir.path().join("long.gt"), "0 1\n".repeat(13)).unwrap();
+    std::fs::write(dir.path().join("far.gt"), "0 1\n1 2\n2 4\n").unwrap();
+    for (gt, line, what) in [
+        ("long.gt", "long.gt:13:", "more than the 12 edges"),
+        ("far.gt", "far.gt:3:", "refers to point 4, but there are 4 points"),
+    ] {
+        for command in [
+            &["eval", "sq.xy", "--gt", gt][..],
+            &["eval", "sq.xy", "--gt", "ok.gt", "--edges", gt],
+            &["render", "sq.xy", "--gt", gt, "-o", "p.svg"],
+            &["view", "sq.xy", "--gt", gt, "-o", "v.html"],
+        ] {
+            sigdt_in(dir.path(), command, None).error(&[line, what]);
+        }
+    }
+    sigdt_in(dir.path(), &["eval", "sq.xy", "--gt", "ok.gt"], None).ok();
+    assert!(!dir.path().join("p.svg").exists() && !dir.path().join("v.html").exists());
+}
+
+#[test]
+fn a_gtn_file_stops_at_the_first_point_past_its_header() {
+    let dir = tempdir();
+    let mut text = String::from("2 2 0 0\n0 0 0\n1 1 0\n");
+    text.push_str(&"2 1 1\n".repeat(1000));
+    std::fs::write(dir.path().join("p.gtn"), text).unwrap();
+    sigdt_in(dir.path(), &["reconstruct", "p.gtn"], None)
+        .error(&["p.gtn:4:", "header says 2 points, but the file goes on past them"]);
+}

@@ -8,7 +8,7 @@ mod read;
 mod write;
 
 pub use read::{
-    parse_edges, parse_points, parse_points_at_most, read_edges, read_points, read_points_at_most,
-    PointFormat, MAX_LINE,
+    parse_edges, parse_edges_of, parse_points, parse_points_at_most, read_edges, read_edges_of,
+    read_points, read_points_at_most, PointFormat, MAX_LINE,
 };
 pub use write::{write_edges, write_reconstruction, OutputFormat};

@@ -20,10 +20,9 @@ pub(super) fn gtn<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result
     let mut points = Vec::with_capacity(n.min(1 << 20));
     while let Some(line) = lines.next_content()? {
         if points.len() == n {
-            let first_extra = lines.number;
-            let m = n + 1 + lines.count_rest()?;
-            lines.number = first_extra;
-            return Err(lines.error(format!("header says {n} points, file has {m}")));
+            // Stop here: counting the rest would read an endless stream forever.
+            let message = format!("header says {n} points, but the file goes on past them");
+            return Err(lines.error(message));
         }
         points.push(gtn_point(line, points.len()).map_err(|message| lines.error(message))?);
     }
@@ -109,7 +108,11 @@ mod tests {
             ("1 2 0 0\n0 0\n", None, "2: expected 3 numbers (index x y), found 2"),
             ("1 2 0 0\n0 0 inf\n", None, "2: coordinate 'inf' is not finite"),
             ("3 2 0 0\n0 0 0\n1 1 1\n\n", None, "4: header says 3 points, file has 2"),
-            ("1 2 0 0\n0 0 0\n1 1 1\n\n2 2 2\n", None, "3: header says 1 points, file has 3"),
+            (
+                "1 2 0 0\n0 0 0\n1 1 1\n\n2 2 2\n",
+                None,
+                "3: header says 1 points, but the file goes on past them",
+            ),
         ];
         for (text, format, expected) in cases {
             assert_eq!(error(parse(text, format)), expected, "{text:?}");

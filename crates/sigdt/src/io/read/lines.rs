@@ -65,15 +65,6 @@ impl<'a, R: BufRead> Lines<'a, R> {
         self.unread = self.number > 0 && !self.content.is_empty();
     }
 
-    /// The number of lines with content left, without checking them.
-    pub(super) fn count_rest(&mut self) -> Result<usize> {
-        let mut count = 0;
-        while self.read_line()? {
-            count += usize::from(!content(&self.buf, false).is_empty());
-        }
-        Ok(count)
-    }
-
     /// Reads the next line into `buf`, without its `\n`; false at the end of input. Stops
     /// with an error, before buffering it, as soon as a line exceeds [`MAX_LINE`] bytes.
     fn read_line(&mut self) -> Result<bool> {
