@@ -3,8 +3,10 @@
 //! A file is written to a temporary file in its own directory, flushed and synced, then
 //! renamed over the target, so a failed run never leaves it half-written or truncated, and
 //! an existing file stays untouched unless the whole run succeeds. A symbolic link is written
-//! through, and an existing file that is not a regular file (`/dev/null`, a named pipe) is
-//! written in place.
+//! through (a dangling one creates its target, as a shell redirection does), an existing file
+//! that is not a regular file (`/dev/null`, a named pipe) is written in place, and a file the
+//! user could not write (read-only) is refused rather than replaced: a rename needs only the
+//! folder's permission.
 
 use std::fs;
 use std::io::{self, BufWriter, ErrorKind, Write};
@@ -48,12 +50,7 @@ impl Output {
             bail!("{shown}: output is the input file; refusing to overwrite it");
         }
         // Write through a symbolic link rather than replace it.
-        let path = match fs::symlink_metadata(given) {
-            Ok(meta) if meta.file_type().is_symlink() => {
-                fs::canonicalize(given).unwrap_or_else(|_| given.to_path_buf())
-            }
-            _ => given.to_path_buf(),
-        };
+        let path = link_target(given)?;
         let dir = match path.parent() {
             Some(dir) if !dir.as_os_str().is_empty() => dir.to_path_buf(),
             _ => PathBuf::from("."),
@@ -64,6 +61,10 @@ impl Output {
         match fs::metadata(&path) {
             Ok(meta) if meta.is_dir() => bail!("{shown}: output is a directory"),
             Ok(meta) if !meta.is_file() => Ok(Output::Special { path }),
+            Ok(meta) if !writable(&path, &meta) => bail!(
+                "{shown}: the file is read-only; refusing to replace it (make it writable or \
+                 choose another output)"
+            ),
             _ => Ok(Output::File { path, dir }),
         }
     }
@@ -123,6 +124,33 @@ fn write_atomically(
     // The temporary file is removed when `persist` fails.
     tmp.persist(path).map_err(|e| anyhow!("{shown}: cannot replace: {}", e.error))?;
     Ok(())
+}
+
+/// Where writing to `given` lands: `given` itself, or, for a symbolic link, the end of its
+/// chain of links, which need not exist yet (it is then created).
+fn link_target(given: &Path) -> Result<PathBuf> {
+    let mut path = given.to_path_buf();
+    // As the kernel does, give up after 40 links (a loop).
+    for _ in 0..40 {
+        match fs::symlink_metadata(&path) {
+            Ok(meta) if meta.file_type().is_symlink() => {
+                let target = fs::read_link(&path)
+                    .map_err(|e| anyhow!("{}: cannot read the link: {e}", given.display()))?;
+                path = match path.parent() {
+                    Some(dir) if target.is_relative() => dir.join(target),
+                    _ => target,
+                };
+            }
+            _ => return Ok(path),
+        }
+    }
+    bail!("{}: too many levels of symbolic links", given.display())
+}
+
+/// Whether the user may write the existing regular file `path`: it has a write permission
+/// bit (root included: a read-only file is protected on purpose) and opens for writing.
+fn writable(path: &Path, meta: &fs::Metadata) -> bool {
+    !meta.permissions().readonly() && fs::OpenOptions::new().write(true).open(path).is_ok()
 }
 
 /// Whether `p` is `-`, meaning standard input or output.

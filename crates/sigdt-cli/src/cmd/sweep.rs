@@ -18,7 +18,7 @@ use sigdt_lab::{curves, dataset};
 use crate::bench::record::{Case, Outcome};
 use crate::bench::{cases, chart, runner};
 use crate::labelled::{eps_sample, pick, write_labelled, Labelled};
-use crate::messages::note;
+use crate::messages::{note, UsageError};
 
 /// What `sigdt sweep` varies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -89,6 +89,7 @@ pub fn run(args: &SweepArgs) -> Result<()> {
     if !(args.time_limit.is_finite() && args.time_limit > 0.0) {
         bail!("--time-limit must be a positive number of seconds");
     }
+    refuse_output_over_input(&args.out, &args.source)?;
     let mut rows = Vec::new();
     for (k, &level) in levels.iter().enumerate() {
         let dir = args.out.join("data").join(format!("{}_{level}", kind_name(args.kind)));
@@ -196,6 +197,26 @@ fn generate(args: &SweepArgs, level: f64, k: u64) -> Result<Vec<(String, Labelle
                 .collect()
         }
     }
+}
+
+/// Refuses an output folder that is, or contains, the input (a folder or an SVG file): the
+/// sweep writes `data/...`, `index.csv` and charts into it and would overwrite the input.
+fn refuse_output_over_input(out: &Path, source: &Path) -> Result<()> {
+    if let (Ok(out_dir), Ok(input)) = (std::fs::canonicalize(out), std::fs::canonicalize(source)) {
+        if input.starts_with(&out_dir) {
+            return Err(UsageError {
+                command: "sweep",
+                kind: clap::error::ErrorKind::ArgumentConflict,
+                message: format!(
+                    "--out {} is, or contains, the input {}: choose an output folder outside it",
+                    out.display(),
+                    source.display()
+                ),
+            }
+            .into());
+        }
+    }
+    Ok(())
 }
 
 /// Writes the sets and their index.csv into `dir`; returns them as cases.

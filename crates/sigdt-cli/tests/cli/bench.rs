@@ -199,3 +199,16 @@ fn outputs_never_replace_the_inputs() {
     assert_eq!(fs::read(&svg).unwrap(), before);
     assert!(!dir.path().join("c.gt").exists(), "nothing written when one output is refused");
 }
+
+#[test]
+fn a_sweep_never_writes_into_its_own_input() {
+    let data = labelled_folder();
+    let index = fs::read(data.path().join("index.csv")).unwrap();
+    let d = data.path().to_str().unwrap();
+    let parent = data.path().parent().unwrap().to_str().unwrap();
+    for out in [d, parent] {
+        sigdt(&["sweep", "noise", d, "--levels", "0.01", "--out", out]).usage_error();
+    }
+    assert_eq!(fs::read(data.path().join("index.csv")).unwrap(), index);
+    assert!(!data.path().join("data").exists() && !data.path().join("sweep.csv").exists());
+}

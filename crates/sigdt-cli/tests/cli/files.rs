@@ -133,3 +133,28 @@ fn special_files_and_symlinks_as_output() {
     assert_eq!(fs::read_to_string(dir.path().join("target.edges")).unwrap(), SQUARE_EDGES);
     assert_no_temporary_files(dir.path());
 }
+
+#[cfg(unix)]
+#[test]
+fn a_read_only_file_is_refused_and_a_dangling_link_is_written_through() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempdir();
+    write_points(dir.path(), "square.xy", &square());
+    // Mode 444: a rename would replace it (it needs only the folder's permission), so it is
+    // refused, even for root, and left as it was.
+    let locked = dir.path().join("locked.edges");
+    fs::write(&locked, "keep\n").unwrap();
+    fs::set_permissions(&locked, fs::Permissions::from_mode(0o444)).unwrap();
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "locked.edges"], None)
+        .error(&["locked.edges: the file is read-only; refusing to replace it"]);
+    assert_eq!(fs::read_to_string(&locked).unwrap(), "keep\n");
+    // A dangling link: the link stays, and its target is created (as `>` would).
+    std::os::unix::fs::symlink("sub/new.edges", dir.path().join("dangling.edges")).unwrap();
+    fs::create_dir(dir.path().join("sub")).unwrap();
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "dangling.edges"], None).ok();
+    let link = fs::symlink_metadata(dir.path().join("dangling.edges")).unwrap();
+    assert!(link.file_type().is_symlink(), "the dangling link was replaced");
+    assert_eq!(fs::read_to_string(dir.path().join("sub/new.edges")).unwrap(), SQUARE_EDGES);
+    assert_no_temporary_files(dir.path());
+    assert_no_temporary_files(&dir.path().join("sub"));
+}
