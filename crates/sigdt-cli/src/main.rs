@@ -21,6 +21,7 @@ mod output;
 mod png;
 mod view;
 
+use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{CommandFactory, Parser};
@@ -30,7 +31,10 @@ use crate::input::Input;
 use crate::messages::UsageError;
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(err) => return clap_exit(&err),
+    };
     let input = Input::new(cli.max_points);
     let result = match cli.command {
         Command::Reconstruct(args) => cmd::reconstruct::run(&args, &input),
@@ -53,5 +57,19 @@ fn main() -> ExitCode {
                 ExitCode::FAILURE
             }
         },
+    }
+}
+
+/// Prints clap's help, version or usage error and returns its exit status, or 1 when the
+/// text cannot be written (`--help > /dev/full` must not report success).
+fn clap_exit(err: &clap::Error) -> ExitCode {
+    let printed = err.print().and_then(|()| std::io::stdout().flush());
+    match printed {
+        Ok(()) => ExitCode::from(err.exit_code().clamp(0, 255) as u8),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(e) => {
+            messages::note(&format!("sigdt: <stdout>: {e}"));
+            ExitCode::FAILURE
+        }
     }
 }

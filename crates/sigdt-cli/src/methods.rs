@@ -1,10 +1,9 @@
 //! `--method`: the one place where the command line turns method names into [`Method`]s.
 //!
 //! A single method (`reconstruct`, `eval`, `render`, `view`, the bench worker) is checked by
-//! clap against [`Method::ALL`], so a wrong name is a usage error (exit status 2) that lists
-//! the names. The lists of `bench` and `sweep` (`M1,M2,...` or `all`) are read when the
-//! command runs, and a wrong name there is an error (exit status 1) with the kernel's
-//! message, as it always was; both go through [`Method`]'s `FromStr`.
+//! clap against [`Method::ALL`], and the lists of `bench` and `sweep` (`M1,M2,...` or `all`)
+//! by [`list_parser`]; either way a wrong name is a usage error (exit status 2) that lists
+//! the names. Both go through [`Method`]'s `FromStr`.
 
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use sigdt::Method;
@@ -13,6 +12,11 @@ use sigdt::Method;
 pub fn parser() -> impl TypedValueParser<Value = Method> {
     let names = Method::ALL.iter().map(|m| m.name());
     PossibleValuesParser::new(names).try_map(|s| s.parse::<Method>())
+}
+
+/// The value parser of a `--method` list: the text as given, once [`list`] accepts it.
+pub fn list_parser() -> impl TypedValueParser<Value = String> {
+    clap::builder::StringValueParser::new().try_map(|text| list(&text).map(|_| text))
 }
 
 /// The methods of a `--method` list: comma-separated names (repeats dropped), or `all`.

@@ -19,7 +19,8 @@ pub struct BenchArgs {
     #[arg(value_name = "DIR")]
     pub dir: PathBuf,
     /// Methods to compare, comma-separated, or 'all'.
-    #[arg(long, value_name = "M1,M2,...|all", default_value = "all")]
+    #[arg(long, value_name = "M1,M2,...|all", default_value = "all",
+          value_parser = crate::methods::list_parser())]
     pub method: String,
     /// Folder for report.md, results.csv and the charts (created if missing).
     #[arg(long, value_name = "DIR", default_value = "bench-report")]

@@ -49,7 +49,8 @@ pub struct SweepArgs {
     #[arg(long, value_name = "L1,L2,...", value_delimiter = ',')]
     pub levels: Vec<f64>,
     /// Methods, comma-separated, or 'all'.
-    #[arg(long, value_name = "M1,M2,...|all", default_value = "all")]
+    #[arg(long, value_name = "M1,M2,...|all", default_value = "all",
+          value_parser = crate::methods::list_parser())]
     pub method: String,
     /// Folder for the generated sets, sweep.csv and rmse.svg.
     #[arg(long, value_name = "DIR", default_value = "sweep")]

@@ -63,7 +63,9 @@ fn bench_imports_results_of_other_tools() {
 fn bench_errors_are_clear() {
     let data = labelled_folder();
     let d = data.path().to_str().unwrap();
-    sigdt(&["bench", d, "--method", "nope"]).error(&["unknown method 'nope'"]);
+    let nope = sigdt(&["bench", d, "--method", "crust,nope"]);
+    assert!(nope.usage_error().stderr.contains("unknown method 'nope'"), "{nope}");
+    sigdt(&["sweep", "noise", d, "--method", ","]).usage_error();
     sigdt(&["bench", d, "--categories", "open"]).error(&["no case matches"]);
     let empty = tempdir();
     sigdt(&["bench", empty.path().to_str().unwrap()]).error(&["index.csv"]);

@@ -158,3 +158,19 @@ fn a_read_only_file_is_refused_and_a_dangling_link_is_written_through() {
     assert_no_temporary_files(dir.path());
     assert_no_temporary_files(&dir.path().join("sub"));
 }
+
+#[cfg(unix)]
+#[test]
+fn help_and_version_that_cannot_be_written_fail() {
+    for args in [&["--help"][..], &["reconstruct", "--help"], &["--version"]] {
+        let full = fs::File::create("/dev/full").unwrap();
+        let status = std::process::Command::new(env!("CARGO_BIN_EXE_sigdt"))
+            .args(args)
+            .stdout(full)
+            .stderr(std::process::Stdio::null())
+            .status()
+            .unwrap();
+        assert_eq!(status.code(), Some(1), "sigdt {} > /dev/full", args.join(" "));
+    }
+    sigdt(&["--version"]).expect(0);
+}
