@@ -63,3 +63,21 @@ fn view_embeds_the_data_and_nothing_external() {
             || fs::read_to_string(dir.path().join("p.html")).unwrap().contains("\"trace\":null")
     );
 }
+
+#[test]
+fn coordinates_near_the_f64_limit_neither_collapse_a_picture_nor_get_written_as_inf() {
+    let dir = tempdir();
+    let huge = [[-1.7e308, 0.0], [1.7e308, 0.0], [0.0, 1.7e308]];
+    write_points(dir.path(), "huge.xy", &huge);
+    sigdt_in(dir.path(), &["render", "huge.xy", "-o", "huge.svg"], None).ok();
+    let svg = fs::read_to_string(dir.path().join("huge.svg")).unwrap();
+    let height: f64 =
+        svg.split("height=\"").nth(1).unwrap().split('"').next().unwrap().parse().unwrap();
+    assert!(height > 200.0, "picture of height {height}");
+    // A diagonal of 141: moves up to 1.4e310, beyond f64::MAX.
+    let big: Vec<[f64; 2]> = square().iter().map(|p| p.map(|v| 100.0 * v)).collect();
+    write_points(dir.path(), "sq.xy", &big);
+    sigdt_in(dir.path(), &["perturb", "sq.xy", "--noise", "1e308", "-o", "p.xy"], None)
+        .error(&["noise level s 1e308 moves point 0 beyond the finite range"]);
+    assert!(!dir.path().join("p.xy").exists());
+}

@@ -29,7 +29,10 @@ pub(crate) struct Frame {
     drawing: f64,
     /// Pixels per input unit.
     scale: f64,
-    /// Input coordinates of the drawing's lower-left corner.
+    /// The exact power-of-two factor applied to input coordinates before subtracting `lo`
+    /// (1, or 1/4 when the extent would overflow).
+    unit: f64,
+    /// Scaled input coordinates of the drawing's lower-left corner.
     lo: Point,
     /// Picture position of `lo`, in pixels (y pointing down).
     at: [f64; 2],
@@ -51,6 +54,12 @@ impl Frame {
                 hi = [hi[0].max(p[0]), hi[1].max(p[1])];
             }
         }
+        // Extents beyond f64::MAX (points near ±f64::MAX) are measured in quarter units,
+        // an exact scaling, so the picture keeps its shape instead of collapsing to height 0.
+        let fits = |lo: Point, hi: Point| (hi[0] - lo[0]).max(hi[1] - lo[1]) < f64::MAX / 4.0;
+        let unit = if fits(lo, hi) { 1.0 } else { 0.25 };
+        (lo, hi) = (lo.map(|v| v * unit), hi.map(|v| v * unit));
+        let pad = pad * unit;
         // At most half the box's longer side, so that one far outlier's circle does not
         // shrink the drawing.
         let side = (hi[0] - lo[0]).max(hi[1] - lo[1]);
@@ -66,8 +75,9 @@ impl Frame {
         }
         let drawing = h * scale;
         let at = [(width - w * scale) / 2.0, MARGIN + drawing];
-        let spacing = median_nearest_distance(&finite) * scale;
-        Frame { width, height: (2.0 * MARGIN + drawing).ceil(), drawing, scale, lo, at, spacing }
+        let spacing = median_nearest_distance(&finite) * unit * scale;
+        let height = (2.0 * MARGIN + drawing).ceil();
+        Frame { width, height, drawing, scale: scale * unit, unit, lo, at, spacing }
     }
 
     /// Makes room for `top` pixels above the drawing (title) and `bottom` below it
@@ -81,8 +91,9 @@ impl Frame {
     /// `p` in picture coordinates (hundredths of a pixel, y pointing down), or `None` when
     /// it is not finite.
     pub fn map(&self, p: Point) -> Option<Px> {
-        let x = self.at[0] + (p[0] - self.lo[0]) * self.scale;
-        let y = self.at[1] - (p[1] - self.lo[1]) * self.scale;
+        let s = self.scale / self.unit; // pixels per scaled unit
+        let x = self.at[0] + (p[0] * self.unit - self.lo[0]) * s;
+        let y = self.at[1] - (p[1] * self.unit - self.lo[1]) * s;
         let (x, y) = ((100.0 * x).round(), (100.0 * y).round());
         // Far outside the page only when the input is not finite or the frame is degenerate.
         (x.abs() < 1e15 && y.abs() < 1e15).then_some([x as i64, y as i64])
@@ -183,5 +194,18 @@ mod tests {
         let tall = Frame::new(&[[0.0, 0.0], [0.0, 100.0], [1.0, 50.0]], 240.0, 0.0);
         assert_eq!(tall.height, 40.0 + 250.0);
         assert_eq!(clamp(f64::NAN, 1.0, 2.0), 1.0);
+    }
+
+    #[test]
+    fn extents_beyond_f64_max_keep_their_shape() {
+        // The same triangle at a normal scale and stretched to ±f64::MAX: the same picture.
+        let small = [[-1.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        let huge = small.map(|p| p.map(|v| v * f64::MAX));
+        let (a, b) = (Frame::new(&small, 800.0, 0.0), Frame::new(&huge, 800.0, 0.0));
+        assert_eq!(a.height, b.height);
+        assert!(b.height > 2.0 * MARGIN + 100.0);
+        for (p, q) in small.iter().zip(&huge) {
+            assert_eq!(a.map(*p), b.map(*q));
+        }
     }
 }

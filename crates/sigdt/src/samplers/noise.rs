@@ -35,8 +35,9 @@ pub const MAX_OUTLIER_FRACTION: f64 = 10.0;
 /// 0.01% of the diagonal).
 ///
 /// # Errors
-/// [`Error::InvalidOption`] if `s` is negative or not finite; [`Error::NonFinite`] for a
-/// non-finite point.
+/// [`Error::InvalidOption`] if `s` is negative or not finite, or if a moved point would
+/// leave the finite range of `f64` (a huge `s`, or an extent near `f64::MAX`);
+/// [`Error::NonFinite`] for a non-finite point.
 pub fn uniform_noise(points: &[Point], s: f64, seed: u64) -> Result<Vec<Point>> {
     let s = fraction("noise level s", s)?;
     let diag = bounding_box(points)?.map_or(0.0, |(lo, hi)| (hi[0] - lo[0]).hypot(hi[1] - lo[1]));
@@ -46,7 +47,7 @@ pub fn uniform_noise(points: &[Point], s: f64, seed: u64) -> Result<Vec<Point>> 
         let angle = TAU * rng.uniform();
         [p[0] + radius * angle.cos(), p[1] + radius * angle.sin()]
     });
-    Ok(moved.collect())
+    finite(moved.collect(), "noise level s", s)
 }
 
 /// `points`, each moved along its unit normal by `(2U − 1)·delta·lfs`, `U` uniform in
@@ -80,7 +81,23 @@ pub fn lfs_noise(
         let t = (2.0 * rng.uniform() - 1.0) * delta * l;
         [p[0] + t * n[0], p[1] + t * n[1]]
     });
-    Ok(moved.collect())
+    finite(moved.collect(), "lfs noise delta", delta)
+}
+
+/// `moved`, unless some point left the finite range of `f64` (then an error naming the
+/// option that moved it there and its value), so no `inf` is ever written for a later
+/// command to refuse.
+fn finite(moved: Vec<Point>, what: &str, value: f64) -> Result<Vec<Point>> {
+    match moved.iter().position(|p| !(p[0].is_finite() && p[1].is_finite())) {
+        None => Ok(moved),
+        Some(i) => {
+            // Display writes 1e308 with all its 309 digits.
+            let value = if value >= 1e15 { format!("{value:e}") } else { value.to_string() };
+            Err(Error::InvalidOption(format!(
+                "{what} {value} moves point {i} beyond the finite range of coordinates"
+            )))
+        }
+    }
 }
 
 /// `points` followed by `round(q·n)` outliers uniform in their bounding box (`n` the number
@@ -88,7 +105,8 @@ pub fn lfs_noise(
 ///
 /// # Errors
 /// [`Error::InvalidOption`] if `q` is negative, not finite or above
-/// [`MAX_OUTLIER_FRACTION`]; [`Error::NonFinite`] for a non-finite point.
+/// [`MAX_OUTLIER_FRACTION`], or if the bounding box is too wide for `f64` (an extent beyond
+/// `f64::MAX`); [`Error::NonFinite`] for a non-finite point.
 pub fn add_outliers(points: &[Point], q: f64, seed: u64) -> Result<Vec<Point>> {
     let q = fraction("outlier fraction q", q)?;
     if q > MAX_OUTLIER_FRACTION {
@@ -106,7 +124,7 @@ pub fn add_outliers(points: &[Point], q: f64, seed: u64) -> Result<Vec<Point>> {
             [lo[0] + u * (hi[0] - lo[0]), lo[1] + v * (hi[1] - lo[1])]
         }));
     }
-    Ok(out)
+    finite(out, "outlier fraction q", q)
 }
 
 /// `value` if it is finite and non-negative.
@@ -149,6 +167,18 @@ mod tests {
         assert!(moves.iter().any(|&d| d > 0.005 * diag));
         assert_eq!(uniform_noise(&points, 0.0, 7).unwrap(), points);
         assert!(uniform_noise(&[], 0.1, 1).unwrap().is_empty());
+    }
+
+    #[test]
+    fn perturbations_never_leave_the_finite_range() {
+        let points = regular_polygon(20, 1.0).points;
+        let err = uniform_noise(&points, 1e308, 1).unwrap_err().to_string();
+        assert!(err.contains("noise level s 1e308 moves point"), "{err}");
+        let wide = [[-1.7e308, 0.0], [1.7e308, 0.0], [0.0, 1.0]];
+        assert!(uniform_noise(&wide, 0.5, 1).is_err());
+        let err = add_outliers(&wide, 1.0, 1).unwrap_err().to_string();
+        assert!(err.contains("outlier fraction q 1 moves point"), "{err}");
+        assert!(add_outliers(&points, 1.0, 1).unwrap().iter().all(|p| p[0].is_finite()));
     }
 
     #[test]
