@@ -19,6 +19,27 @@ from .errors import InvalidInputError, SigdtWarning
 WARNING_STATUSES = ("sculpting-stuck", "network", "noisy")
 
 
+def _cores() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # pragma: no cover  # not on Linux
+        return os.cpu_count() or 1
+
+
+def _threads(n_jobs: Any) -> int | None:
+    """The thread count for ``n_jobs`` (``None``: the extension's pool of one per core)."""
+    if n_jobs is None:
+        return None
+    try:
+        valid = not isinstance(n_jobs, bool) and operator.index(n_jobs) != 0
+    except TypeError:
+        valid = False
+    if not valid:
+        raise ValueError(f"n_jobs must be a non-zero int or None, got {n_jobs!r}")
+    n, cores = operator.index(n_jobs), _cores()
+    return min(n, cores) if n > 0 else max(1, cores + 1 + n)
+
+
 def _warn_about(results: list[Reconstruction], many: bool) -> None:
     bad = [(k, r) for k, r in enumerate(results) if r.status in WARNING_STATUSES]
     if not bad:
@@ -116,7 +137,9 @@ def reconstruct_many(
     point_sets : iterable of array_like, each shape (n, 2)
         The point sets.
     n_jobs : int, optional
-        Number of threads; default: one per core.
+        Number of threads; default (``None``) or ``-1``: one per core; ``-2`` all cores but
+        one, and so on (scikit-learn's convention). At most the number of cores: more
+        threads would only add overhead.
     method, leaf_elimination
         As in :func:`reconstruct`.
 
@@ -129,7 +152,7 @@ def reconstruct_many(
     InvalidInputError
         A set is unusable; the message starts with ``point set K:``, its position.
     ValueError
-        Unknown method, or ``n_jobs`` < 1.
+        Unknown method, or ``n_jobs`` is 0 or not an int.
 
     Warns
     -----
@@ -145,14 +168,7 @@ def reconstruct_many(
     ['polygon', 'too-few-points']
     """
     _check_method(method)
-    if n_jobs is not None:
-        try:
-            valid = not isinstance(n_jobs, bool) and operator.index(n_jobs) >= 1
-        except TypeError:
-            valid = False
-        if not valid:
-            raise ValueError(f"n_jobs must be a positive int or None, got {n_jobs!r}")
-        n_jobs = operator.index(n_jobs)
+    n_jobs = _threads(n_jobs)
     arrays = []
     for k, p in enumerate(point_sets):
         try:

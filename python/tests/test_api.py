@@ -403,10 +403,21 @@ def test_reconstruct_many_turns_a_panic_into_an_internal_error_naming_the_set(va
     ]
 
 
-@pytest.mark.parametrize("n_jobs", [0, -1, 1.5, "2"])
+@pytest.mark.parametrize("n_jobs", [0, True, 1.5, "2"])
 def test_reconstruct_many_rejects_bad_n_jobs(n_jobs):
     with pytest.raises(ValueError, match="n_jobs"):
         sigdt.reconstruct_many([SQUARE], n_jobs=n_jobs)
+
+
+def test_n_jobs_counts_like_scikit_learn_and_never_exceeds_the_cores():
+    from sigdt._api import _cores, _threads
+
+    cores = _cores()
+    assert _threads(None) is None
+    assert _threads(-1) == cores and _threads(1) == 1
+    assert _threads(-2) == max(1, cores - 1) and _threads(-1000) == 1
+    assert _threads(1000) == cores  # 1000 threads would take seconds to start
+    assert sigdt.reconstruct_many([SQUARE] * 3, n_jobs=-1) == [sigdt.reconstruct(SQUARE)] * 3
 
 
 def test_reconstruct_many_rejects_unknown_method():

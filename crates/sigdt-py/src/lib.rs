@@ -6,9 +6,15 @@
 //! docstrings live in `python/sigdt`.
 mod convert;
 mod eval;
+mod interrupt;
 mod replay;
 
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex, OnceLock};
+
 use convert::{err, guarded, points, InternalError, InvalidInputError, ParseError};
+use interrupt::interruptible;
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -30,11 +36,26 @@ fn reconstruct<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let options = options(method, leaf_elimination)?;
     let pts = convert::points(&points)?;
-    let rec = py
-        .detach(|| guarded(|| sigdt::reconstruct(&pts, &options)))
-        .map_err(InternalError::new_err)?
-        .map_err(err)?;
+    let n = pts.len();
+    let work = move |_: &AtomicBool| guarded(|| sigdt::reconstruct(&pts, &options));
+    let rec = interruptible(py, n, work)?.map_err(InternalError::new_err)?.map_err(err)?;
     convert::reconstruction(py, &rec)
+}
+
+/// The thread pool of `threads` threads, built once and kept for later calls.
+fn pool(threads: usize) -> Result<Arc<rayon::ThreadPool>, String> {
+    static POOLS: OnceLock<Mutex<HashMap<usize, Arc<rayon::ThreadPool>>>> = OnceLock::new();
+    let mut pools = POOLS.get_or_init(Default::default).lock().map_err(|e| e.to_string())?;
+    if let Some(pool) = pools.get(&threads) {
+        return Ok(Arc::clone(pool));
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map(Arc::new)
+        .map_err(|e| e.to_string())?;
+    pools.insert(threads, Arc::clone(&pool));
+    Ok(pool)
 }
 
 /// `reconstruct_many(point_sets, method, leaf_elimination, n_jobs) -> list[dict]`, in
@@ -62,28 +83,31 @@ fn reconstruct_many<'py>(
                 .map_err(|e| InvalidInputError::new_err(format!("point set {k}: {}", e.value(py))))
         })
         .collect::<PyResult<Vec<_>>>()?;
-    let run = || -> Vec<Result<sigdt::Result<sigdt::Reconstruction>, String>> {
-        sets.par_iter()
-            .enumerate()
-            .map(|(k, pts)| {
-                guarded(|| {
-                    if _panic_in_set == Some(k) {
-                        panic!("test hook: panic in point set {k}");
+    let total: usize = sets.iter().map(Vec::len).sum();
+    let work = move |cancel: &AtomicBool| {
+        let run = || -> Vec<Result<sigdt::Result<sigdt::Reconstruction>, String>> {
+            sets.par_iter()
+                .enumerate()
+                .map(|(k, pts)| {
+                    if cancel.load(Ordering::Relaxed) {
+                        return Err("interrupted".to_string()); // the caller has gone
                     }
-                    sigdt::reconstruct(pts, &options)
+                    guarded(|| {
+                        if _panic_in_set == Some(k) {
+                            panic!("test hook: panic in point set {k}");
+                        }
+                        sigdt::reconstruct(pts, &options)
+                    })
                 })
-            })
-            .collect()
+                .collect()
+        };
+        match n_jobs {
+            None => Ok(run()),
+            Some(threads) => pool(threads).map(|pool| pool.install(run)),
+        }
     };
-    let results = py.detach(|| match n_jobs {
-        None => Ok(run()),
-        Some(threads) => rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .map(|pool| pool.install(run))
-            .map_err(|e| e.to_string()),
-    });
-    let results = results.map_err(pyo3::exceptions::PyRuntimeError::new_err)?;
+    let results =
+        interruptible(py, total, work)?.map_err(pyo3::exceptions::PyRuntimeError::new_err)?;
     let list = PyList::empty(py);
     for (k, result) in results.into_iter().enumerate() {
         let rec = result

@@ -1,0 +1,58 @@
+"""Ctrl-C during a long call: KeyboardInterrupt comes promptly, and the module stays usable.
+
+A timer thread sends SIGINT to the process while the call runs with the GIL released; the
+call must raise KeyboardInterrupt well before the work would have ended.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+import sigdt
+
+pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+
+
+def spiral(n: int) -> np.ndarray:
+    t = np.sqrt(np.linspace(0.0, 1.0, n)) * 60 * np.pi
+    return np.c_[t * np.cos(t), t * np.sin(t)]
+
+
+def interrupted_after(delay: float, call) -> float:
+    """Seconds from the signal to KeyboardInterrupt (fails if the call ends first)."""
+    sent: list[float] = []
+
+    def fire() -> None:
+        sent.append(time.perf_counter())
+        os.kill(os.getpid(), signal.SIGINT)
+
+    timer = threading.Timer(delay, fire)
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            call()
+        return time.perf_counter() - sent[0]
+    finally:
+        timer.cancel()
+
+
+def test_reconstruct_many_is_interrupted_promptly():
+    sets = [spiral(50_000)] * 200  # about 20 s of work on two cores
+    start = time.perf_counter()
+    latency = interrupted_after(0.3, lambda: sigdt.reconstruct_many(sets, n_jobs=2))
+    assert latency < 2.0, f"KeyboardInterrupt {latency:.2f} s after the signal"
+    assert time.perf_counter() - start < 5.0
+    assert sigdt.reconstruct_many(sets[:2]) == [sigdt.reconstruct(sets[0])] * 2
+
+
+def test_one_large_reconstruction_is_interrupted_promptly():
+    points = spiral(1_500_000)  # seconds of work
+    latency = interrupted_after(0.3, lambda: sigdt.reconstruct(points, method="sig-auto"))
+    assert latency < 2.0, f"KeyboardInterrupt {latency:.2f} s after the signal"
+    assert sigdt.reconstruct(points[:1000]).status in ("polygon", "polygons", "sculpting-stuck")
