@@ -36,6 +36,7 @@ fn main() -> ExitCode {
         Err(err) => return clap_exit(&err),
     };
     let input = Input::new(cli.max_points);
+    output::remove_pending_on_signals();
     let result = match cli.command {
         Command::Reconstruct(args) => cmd::reconstruct::run(&args, &input),
         Command::Graph(args) => cmd::graph::run(&args, &input),

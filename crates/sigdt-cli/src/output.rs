@@ -11,6 +11,7 @@
 use std::fs;
 use std::io::{self, BufWriter, ErrorKind, Write};
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
 use anyhow::{anyhow, bail, Result};
 
@@ -113,6 +114,7 @@ fn write_atomically(
     let mut tmp = builder.tempfile_in(dir).map_err(|e| {
         anyhow!("{shown}: cannot create a temporary file in '{}': {e}", dir.display())
     })?;
+    let _pending = Pending::new(tmp.path());
     if let Ok(meta) = fs::metadata(path) {
         // Replacing an existing file keeps its permissions.
         let _ = tmp.as_file().set_permissions(meta.permissions());
@@ -151,6 +153,43 @@ fn link_target(given: &Path) -> Result<PathBuf> {
 /// bit (root included: a read-only file is protected on purpose) and opens for writing.
 fn writable(path: &Path, meta: &fs::Metadata) -> bool {
     !meta.permissions().readonly() && fs::OpenOptions::new().write(true).open(path).is_ok()
+}
+
+/// Temporary files being written, removed by [`remove_pending_on_signals`] when the
+/// process is told to stop midway.
+static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// A temporary file listed in [`PENDING`] while it lives.
+struct Pending(PathBuf);
+
+impl Pending {
+    fn new(path: &Path) -> Pending {
+        lock_pending().push(path.to_path_buf());
+        Pending(path.to_path_buf())
+    }
+}
+
+impl Drop for Pending {
+    fn drop(&mut self) {
+        lock_pending().retain(|p| p != &self.0);
+    }
+}
+
+fn lock_pending() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
+    PENDING.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// On SIGINT, SIGTERM or SIGHUP, removes the temporary files being written and exits with
+/// status 130: the targets are untouched (they are only ever replaced whole) and nothing is
+/// left behind. Without a handler, the process would die with its `.sigdt-*.tmp` in place.
+pub fn remove_pending_on_signals() {
+    // Installing fails only if a handler exists already; the default behaviour then stays.
+    let _ = ctrlc::set_handler(|| {
+        for path in lock_pending().iter() {
+            let _ = fs::remove_file(path);
+        }
+        std::process::exit(130);
+    });
 }
 
 /// Whether `p` is `-`, meaning standard input or output.

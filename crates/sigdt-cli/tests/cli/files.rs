@@ -174,3 +174,47 @@ fn help_and_version_that_cannot_be_written_fail() {
     }
     sigdt(&["--version"]).expect(0);
 }
+
+#[cfg(unix)]
+#[test]
+fn a_run_stopped_while_writing_leaves_no_temporary_file() {
+    use std::process::{Command, Stdio};
+    let dir = tempdir();
+    // 200,000 scattered points: a few hundred milliseconds of writing their 600,000 edges.
+    let mut rng = 0x2545_f491_4f6c_dd1d_u64;
+    let mut uniform = || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        (rng >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let points: Vec<[f64; 2]> = (0..200_000).map(|_| [uniform(), uniform()]).collect();
+    write_points(dir.path(), "cloud.xy", &points);
+    fs::write(dir.path().join("dt.edges"), "old\n").unwrap();
+    for signal in ["TERM", "INT", "HUP"] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_sigdt"))
+            .args(["graph", "cloud.xy", "--kind", "dt", "-o", "dt.edges"])
+            .current_dir(dir.path())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        let tmp = |d: &Path| {
+            fs::read_dir(d)
+                .unwrap()
+                .any(|e| e.unwrap().file_name().to_string_lossy().ends_with(".tmp"))
+        };
+        // Wait for the temporary file, then stop the process while it writes.
+        let start = std::time::Instant::now();
+        while !tmp(dir.path()) {
+            assert!(child.try_wait().unwrap().is_none(), "finished before it was stopped");
+            assert!(start.elapsed().as_secs() < 60, "no temporary file appeared");
+            std::thread::sleep(std::time::Duration::from_micros(200));
+        }
+        let pid = child.id().to_string();
+        Command::new("kill").args([&format!("-{signal}"), &pid]).status().unwrap();
+        let status = child.wait().unwrap();
+        assert_eq!(status.code(), Some(130), "SIG{signal}: {status:?}");
+        assert_no_temporary_files(dir.path());
+        assert_eq!(fs::read_to_string(dir.path().join("dt.edges")).unwrap(), "old\n");
+    }
+}
