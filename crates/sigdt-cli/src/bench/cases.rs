@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use anyhow::{anyhow, Result};
+use anyhow::{anyhow, bail, Result};
 use sigdt_lab::dataset;
 
 use super::record::Case;
@@ -21,7 +21,24 @@ pub fn select(dir: &Path, categories: &[String], names: Option<&str>) -> Result<
         (categories.is_empty() || categories.contains(&row.category))
             && names.map_or(true, |pattern| row.name.contains(pattern))
     };
-    Ok(rows.into_iter().filter(wanted).map(|row| Case { row, graph_epsilon: None }).collect())
+    let cases: Vec<Case> =
+        rows.into_iter().filter(wanted).map(|row| Case { row, graph_epsilon: None }).collect();
+    for case in &cases {
+        let files = case.row.files(dir);
+        for path in
+            [Some(&files.points), Some(&files.gt), files.truth.as_ref()].into_iter().flatten()
+        {
+            // Parts of a run read case files in-process, outside the workers' time limit: a
+            // named pipe there would block it forever. A missing file fails its case only.
+            if path.exists() && !path.is_file() {
+                bail!(
+                    "{}: not a regular file (a case file cannot be a pipe or device)",
+                    path.display()
+                );
+            }
+        }
+    }
+    Ok(cases)
 }
 
 #[cfg(test)]

@@ -80,8 +80,20 @@ fn run_one(exe: &Path, plan: &Plan<'_>, case: &dataset::Case, method: &str) -> O
     }
 }
 
-/// Waits for `child` at most `limit`, killing it after that.
-fn wait(mut child: Child, limit: Duration) -> Outcome {
+/// Waits for `child` at most `limit`, killing it after that, and reads its result line.
+fn wait(child: Child, limit: Duration) -> Outcome {
+    match finish(child, limit) {
+        Err(outcome) => outcome,
+        Ok(stdout) => match stdout.lines().find_map(Run::parse) {
+            Some(run) => Outcome::Done(run),
+            None => Outcome::Failed(format!("unreadable worker output: {:?}", stdout.trim())),
+        },
+    }
+}
+
+/// The standard output of `child` once it succeeds within `limit`; otherwise the outcome
+/// that says what happened (killed after `limit`, failed with its last message).
+fn finish(mut child: Child, limit: Duration) -> Result<String, Outcome> {
     // Drain the pipes on threads so that a chatty worker never blocks on a full pipe.
     let drain = |pipe: Option<Box<dyn Read + Send>>| {
         std::thread::spawn(move || {
@@ -104,60 +116,77 @@ fn wait(mut child: Child, limit: Duration) -> Outcome {
                 break None;
             }
             Ok(None) => std::thread::sleep(Duration::from_millis(2)),
-            Err(e) => return Outcome::Failed(format!("waiting for the worker: {e}")),
+            Err(e) => return Err(Outcome::Failed(format!("waiting for the worker: {e}"))),
         }
     };
     let (stdout, stderr) = (stdout.join().unwrap_or_default(), stderr.join().unwrap_or_default());
-    let Some(status) = status else { return Outcome::TimedOut(limit.as_secs_f64()) };
+    let Some(status) = status else { return Err(Outcome::TimedOut(limit.as_secs_f64())) };
     if !status.success() {
         let message = stderr.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("");
         let message = message.strip_prefix("sigdt: ").unwrap_or(message);
-        return Outcome::Failed(match status.code() {
+        return Err(Outcome::Failed(match status.code() {
             Some(code) => format!("exit status {code}: {message}"),
             None => format!("killed by a signal ({status}): {message}"),
-        });
+        }));
     }
-    match stdout.lines().find_map(Run::parse) {
-        Some(run) => Outcome::Done(run),
-        None => Outcome::Failed(format!("unreadable worker output: {:?}", stdout.trim())),
+    Ok(stdout)
+}
+
+/// The graph-based epsilon of every case, each computed by a worker under the plan's time
+/// limit (on a ground truth with crossing edges it can take minutes); `None` where the
+/// files cannot be read, the computation fails or runs out of time.
+pub fn fill_graph_epsilon(plan: &Plan<'_>, cases: &mut [Case]) -> Result<()> {
+    let exe = std::env::current_exe().context("cannot locate the sigdt executable")?;
+    for case in cases.iter_mut() {
+        let files = case.row.files(plan.dir);
+        let mut command = Command::new(&exe);
+        command.arg("bench-worker").arg("--epsilon").arg(&files.points).arg(&files.gt);
+        command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
+        case.graph_epsilon = command
+            .spawn()
+            .ok()
+            .and_then(|child| finish(child, plan.time_limit).ok())
+            .and_then(|out| out.trim().strip_prefix("graph_epsilon=")?.parse::<f64>().ok())
+            .filter(|e| e.is_finite());
     }
+    Ok(())
 }
 
 /// Scores precomputed results (`DIR/NAME.edges`, one `i j` a line, and optionally
-/// `DIR/times.csv` with `name,time_ms` rows) as method `label`, in-process.
-pub fn import(label: &str, results: &Path, data: &Path, cases: &[Case]) -> Result<Vec<Entry>> {
+/// `DIR/times.csv` with `name,time_ms` rows) as method `label`, each in a worker process
+/// under the plan's time limit (scoring a wild result, with many crossing edges, is slow).
+pub fn import(label: &str, results: &Path, plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
+    let exe = std::env::current_exe().context("cannot locate the sigdt executable")?;
     let times = read_times(&results.join("times.csv"))?;
     let mut entries = Vec::new();
     for (case, c) in cases.iter().enumerate() {
-        let edges_file = results.join(format!("{}.edges", c.row.name));
-        let outcome = match score_file(data, &c.row, &edges_file, &times) {
-            Ok(run) => run,
-            Err(e) => Outcome::Failed(format!("{e:#}")),
+        let edges = results.join(format!("{}.edges", c.row.name));
+        let outcome = if edges.is_file() {
+            let files = c.row.files(plan.dir);
+            let mut command = Command::new(&exe);
+            command.arg("bench-worker").arg("--score").arg(&edges);
+            command.arg(&files.points).arg(&files.gt);
+            if let Some(truth) = &files.truth {
+                command.arg("--truth").arg(truth);
+            }
+            command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
+            match command.spawn() {
+                Err(e) => Outcome::Failed(format!("cannot start the worker: {e}")),
+                Ok(child) => match wait(child, plan.time_limit) {
+                    Outcome::Done(mut run) => {
+                        let time = times.iter().find(|(n, _)| *n == c.row.name);
+                        run.time_ms = time.map_or(f64::NAN, |t| t.1);
+                        Outcome::Done(run)
+                    }
+                    other => other,
+                },
+            }
+        } else {
+            Outcome::Failed(format!("no result file {}", edges.display()))
         };
         entries.push(Entry { case, method: label.to_string(), outcome });
     }
     Ok(entries)
-}
-
-fn score_file(
-    data: &Path,
-    case: &dataset::Case,
-    edges: &Path,
-    times: &[(String, f64)],
-) -> Result<Outcome> {
-    if !edges.is_file() {
-        return Ok(Outcome::Failed(format!("no result file {}", edges.display())));
-    }
-    let files = case.files(data);
-    let pts = sigdt::io::read_points(&files.points)?;
-    let gt = sigdt::io::read_edges_of(&files.gt, pts.len())?;
-    let clean = files.truth.as_deref().map(sigdt::io::read_points).transpose()?;
-    let mut result = sigdt::io::read_edges_of(edges, pts.len())?;
-    result.sort_unstable();
-    result.dedup();
-    let time = times.iter().find(|(n, _)| *n == case.name).map_or(f64::NAN, |t| t.1);
-    let run = super::worker::score(&pts, clean.as_deref(), &gt, &result, "imported", time)?;
-    Ok(Outcome::Done(run))
 }
 
 /// `name,time_ms` rows (a header line is skipped); a missing file gives no times.

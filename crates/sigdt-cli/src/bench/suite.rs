@@ -18,14 +18,14 @@ pub fn run(
     imports: &[(String, PathBuf)],
     mut cases: Vec<Case>,
 ) -> Result<BenchData> {
-    overlap::fill_graph_epsilon(plan.dir, &mut cases);
+    runner::fill_graph_epsilon(plan, &mut cases)?;
     let mut entries = runner::run_all(plan, &cases)?;
     let mut methods = plan.methods.to_vec();
     for (label, dir) in imports {
         if !dir.is_dir() {
             bail!("{}: --import folder does not exist", dir.display());
         }
-        entries.extend(runner::import(label, dir, plan.dir, &cases)?);
+        entries.extend(runner::import(label, dir, plan, &cases)?);
         methods.push(label.clone());
     }
     Ok(BenchData {

@@ -90,6 +90,25 @@ pub fn measure(
         .context("scoring the result")
 }
 
+/// The graph-based epsilon of the case (`sigdt_lab::eval::graph_epsilon`).
+pub fn graph_epsilon(points: &Path, gt: &Path) -> Result<f64> {
+    let pts = sigdt::io::read_points(points)?;
+    let gt = sigdt::io::read_edges_of(gt, pts.len())?;
+    Ok(sigdt_lab::eval::graph_epsilon(&pts, &gt)?)
+}
+
+/// Scores the edge file `edges` (another tool's result on the case) with status
+/// `imported`; the time is left NaN for the caller, who has the tool's own times.
+pub fn score_file(points: &Path, gt: &Path, truth: Option<&Path>, edges: &Path) -> Result<Run> {
+    let pts = sigdt::io::read_points(points)?;
+    let gt = sigdt::io::read_edges_of(gt, pts.len())?;
+    let clean = truth.map(sigdt::io::read_points).transpose()?;
+    let mut result = sigdt::io::read_edges_of(edges, pts.len())?;
+    result.sort_unstable();
+    result.dedup();
+    score(&pts, clean.as_deref(), &gt, &result, "imported", f64::NAN).context("scoring the result")
+}
+
 /// Scores `edges` (a result on `points`) against `gt`; distances and areas are measured
 /// against the ground truth on `clean` positions when given.
 pub fn score(

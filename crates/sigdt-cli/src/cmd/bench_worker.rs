@@ -1,5 +1,6 @@
-//! `sigdt bench-worker` (hidden): one method on one labelled case, one result line on
-//! stdout. `sigdt bench` runs one such process per (case, method); see
+//! `sigdt bench-worker` (hidden): one method on one labelled case, or the score of another
+//! tool's result file (`--score`), one result line on stdout. `sigdt bench` runs one such
+//! process per (case, method) and per imported result, under its time limit; see
 //! [`bench::worker`](crate::bench::worker).
 
 use std::path::PathBuf;
@@ -21,8 +22,15 @@ pub struct WorkerArgs {
     #[arg(long)]
     pub truth: Option<PathBuf>,
     /// Method.
-    #[arg(long, value_parser = crate::methods::parser())]
-    pub method: Method,
+    #[arg(long, value_parser = crate::methods::parser(),
+          required_unless_present_any = ["score", "epsilon"])]
+    pub method: Option<Method>,
+    /// Score this edge file (another tool's result) instead of running a method.
+    #[arg(long, value_name = "EDGES", conflicts_with = "method")]
+    pub score: Option<PathBuf>,
+    /// Print the graph-based epsilon of the case (`graph_epsilon=E`) instead.
+    #[arg(long, conflicts_with_all = ["method", "score"])]
+    pub epsilon: bool,
     /// Timed runs after the warm-up.
     #[arg(long, default_value_t = 5)]
     pub repeat: usize,
@@ -30,9 +38,19 @@ pub struct WorkerArgs {
 
 /// `sigdt bench-worker`: prints one result line.
 pub fn run(args: &WorkerArgs) -> Result<()> {
-    let options = Options { method: args.method, ..Options::default() };
-    let run =
-        worker::measure(&args.points, &args.gt, args.truth.as_deref(), &options, args.repeat)?;
+    let (points, gt, truth) = (&args.points, &args.gt, args.truth.as_deref());
+    if args.epsilon {
+        println!("graph_epsilon={:e}", worker::graph_epsilon(points, gt)?);
+        return Ok(());
+    }
+    let run = match (&args.score, args.method) {
+        (Some(edges), _) => worker::score_file(points, gt, truth, edges)?,
+        (None, Some(method)) => {
+            let options = Options { method, ..Options::default() };
+            worker::measure(points, gt, truth, &options, args.repeat)?
+        }
+        (None, None) => anyhow::bail!("bench-worker needs --method or --score"),
+    };
     println!("{}", run.line());
     Ok(())
 }

@@ -60,6 +60,46 @@ fn bench_imports_results_of_other_tools() {
 }
 
 #[test]
+fn imported_results_are_scored_under_the_time_limit_and_pipes_are_refused() {
+    let data = tempdir();
+    let d = data.path();
+    let n = 3000;
+    let mut rng = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        rng
+    };
+    let points: Vec<[f64; 2]> =
+        (0..n).map(|_| [(next() % 1_000_000) as f64, (next() % 1_000_000) as f64]).collect();
+    write_points(d, "cloud.xy", &points);
+    fs::write(d.join("cloud.gt"), edges_text(&cycle_edges(n))).unwrap();
+    fs::write(d.join("index.csv"), format!("name,category,n_points\ncloud,manifold,{n}\n"))
+        .unwrap();
+    // A wild result: 9000 random chords, crossing everywhere, slow for the area metric.
+    let other = tempdir();
+    let wild: Vec<[usize; 2]> = (0..3 * n)
+        .map(|_| (next() as usize % n, next() as usize % n))
+        .filter(|(i, j)| i != j)
+        .map(|(i, j)| [i.min(j), i.max(j)])
+        .collect();
+    fs::write(other.path().join("cloud.edges"), edges_text(&wild)).unwrap();
+    let import = format!("wild={}", other.path().display());
+    let out = tempdir();
+    let (ds, o) = (d.to_str().unwrap(), out.path().to_str().unwrap());
+    let args = ["bench", ds, "--method", "emst", "--out", o, "--import", &import];
+    sigdt(&[&args[..], &["--time-limit", "0.3"]].concat()).expect(0);
+    let csv = fs::read_to_string(out.path().join("results.csv")).unwrap();
+    assert!(csv.lines().any(|l| l.contains(",wild,timeout,")), "{csv}");
+    // A named pipe as a case file is refused at once instead of blocking the run.
+    fs::remove_file(d.join("cloud.xy")).unwrap();
+    let status = std::process::Command::new("mkfifo").arg(d.join("cloud.xy")).status().unwrap();
+    assert!(status.success());
+    sigdt(&["bench", ds, "--out", o]).error(&["cloud.xy: not a regular file"]);
+}
+
+#[test]
 fn bench_errors_are_clear() {
     let data = labelled_folder();
     let d = data.path().to_str().unwrap();
