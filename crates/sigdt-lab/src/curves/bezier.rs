@@ -36,6 +36,7 @@ use std::path::Path;
 
 use svgtypes::{SimplePathSegment, SimplifyingPathParser};
 
+use sigdt::internals::distance;
 use sigdt::{Error, Point, Result};
 
 /// A chain of cubic Bézier segments, each `[start, control1, control2, end]`, where every
@@ -128,7 +129,15 @@ pub fn parse_svg_paths(text: &str, name: &str) -> Result<Vec<BezierPath>> {
 /// The `d` value and 1-based line of every `<path` start tag of `text`, in order.
 fn path_data(text: &str, name: &str) -> Result<Vec<(String, usize)>> {
     let bytes = text.as_bytes();
-    let line_at = |pos: usize| 1 + bytes[..pos].iter().filter(|&&b| b == b'\n').count();
+    // Lines are counted from the last position asked for, which only moves forward, so the
+    // whole scan stays linear in the file (not quadratic in its number of paths).
+    let counted = std::cell::Cell::new((0usize, 1usize));
+    let line_at = |pos: usize| {
+        let (from, line) = counted.get();
+        let line = line + bytes[from..pos].iter().filter(|&&b| b == b'\n').count();
+        counted.set((pos, line));
+        line
+    };
     let fail = |pos: usize, message: String| Error::Parse {
         path: name.to_string(),
         line: line_at(pos),
@@ -236,7 +245,14 @@ fn subpaths(d: &str, name: &str, line: usize, curves: &mut Vec<BezierPath>) -> R
                 continue;
             }
             SimplePathSegment::ClosePath => {
-                if at != start {
+                if rounding_apart(&current, at, start) {
+                    // The decimal text only missed the start (a circle drawn as arcs ends
+                    // 1e-14 away): snap the end onto it instead of adding a closing line
+                    // that short, whose noisy corners would make lfs vanish there.
+                    if let Some(last) = current.segments.last_mut() {
+                        last[3] = start;
+                    }
+                } else if at != start {
                     current.segments.push(line_cubic(at, start));
                 }
                 current.closed = true;
@@ -270,6 +286,13 @@ fn subpaths(d: &str, name: &str, line: usize, curves: &mut Vec<BezierPath>) -> R
     }
     finish(&mut current, at, start);
     Ok(())
+}
+
+/// Whether `at` misses `start` only by floating-point rounding of the path's coordinates:
+/// by at most 2^-40 (about 1e-12) of their largest magnitude, and not at all.
+fn rounding_apart(path: &BezierPath, at: Point, start: Point) -> bool {
+    let scale = path.segments.iter().flatten().flatten().fold(0.0, |m: f64, v| m.max(v.abs()));
+    at != start && !path.segments.is_empty() && distance(at, start) <= scale * 2f64.powi(-40)
 }
 
 /// The cubic tracing the straight segment from `p` to `q` at constant speed.
@@ -324,6 +347,20 @@ mod tests {
         assert_eq!(curves[0].segments[2], line_cubic([2.0, 2.0], [0.0, 0.0]));
         assert_eq!(curves[1].segments.len(), 3);
         assert!(parse("<svg><rect/></svg>").unwrap().is_empty());
+    }
+
+    #[test]
+    fn a_close_that_misses_the_start_by_rounding_snaps_onto_it() {
+        // A closed arc whose last point lands 1e-14 from the start, as decimal text of a
+        // circle does: no 1e-14 closing line (its noisy corners made eps-sampling stall).
+        let near =
+            parse("<path d='M 100 0 C 100 50 50 100 0 100 C -100 100 -100 -1e-14 100 -1e-14 Z'/>");
+        let near = near.unwrap();
+        assert_eq!(near[0].segments.len(), 2);
+        assert!(near[0].closed && near[0].segments[1][3] == [100.0, 0.0]);
+        // A real gap, however small against the drawing's size, still gets its line.
+        let gap = parse("<path d='M 100 0 C 100 50 50 100 0 100 L 100 -1e-6 Z'/>").unwrap();
+        assert_eq!(gap[0].segments.len(), 3);
     }
 
     #[test]
