@@ -21,8 +21,10 @@
 //! vertex is manifold or interior.
 //!
 //! # Complexity
-//! O(n log n) for Delaunay triangulations of bounded degree: each step re-examines the stars
-//! of three vertices.
+//! O(n log n) for Delaunay triangulations of bounded degree. A step pushes the triangles
+//! beside the ones it turned interior and the stars of vertices whose class changed, and
+//! reclassifies three vertices (O(degree) each): a fan around one vertex of degree `d`
+//! costs O(d) a step in the reclassification, but no longer O(d) queue entries.
 //!
 //! # References
 //! - [OM13] S. Ohrhallinger, S. Mudur. An efficient algorithm for determining an aesthetic
@@ -57,15 +59,26 @@ pub fn inflate(bd: &mut Boundary<'_>, g: &EdgeMask, stats: &mut Stats) {
         if bd.inside[c.t as usize] || !is_candidate(bd, c.t) || cost(bd, c.t) != c.cost {
             continue;
         }
-        let touched = accept(bd, c.t, stats);
+        let (touched, filled) = accept(bd, c.t, stats);
+        // A triangle's cost reads its own edges and the labels across them, so it changes
+        // only beside a triangle that turned interior; its candidacy changes only there or
+        // at a vertex whose class changed. Exactly those are pushed again (their entries
+        // went stale); every other candidate keeps its valid entry. Pushing the whole star
+        // of every touched vertex instead made a fan of degree n cost O(n) a step.
         for &v in &touched {
+            let before = bd.class[v as usize];
             bd.reclassify(v);
+            if bd.class[v as usize] != before {
+                push_around(bd, &mut queue, v);
+            }
         }
-        // Every triangle whose cost or candidacy changed has a touched vertex: it shares an
-        // edge with `t` or with a filled pocket triangle, or has a reclassified vertex. Its
-        // queued entry is stale now and is skipped when popped, so push it again.
-        for &v in &touched {
-            push_around(bd, &mut queue, v);
+        for &f in &filled {
+            for h in 3 * f..3 * f + 3 {
+                let twin = bd.dt.twin(h);
+                if twin != EMPTY {
+                    push_if_candidate(bd, &mut queue, twin / 3);
+                }
+            }
         }
     }
     debug_assert_eq!(bd.non_manifold, 0, "inflating left non-manifold vertices");
@@ -96,15 +109,19 @@ fn cost(bd: &Boundary<'_>, t: u32) -> f64 {
 
 fn push_around(bd: &Boundary<'_>, queue: &mut CandidateQueue, v: u32) {
     for h in bd.dt.outgoing(v) {
-        let t = h / 3;
-        if !bd.inside[t as usize] && is_candidate(bd, t) {
-            queue.push(t, cost(bd, t));
-        }
+        push_if_candidate(bd, queue, h / 3);
     }
 }
 
-/// Turns `t` interior; returns the vertices whose star changed.
-fn accept(bd: &mut Boundary<'_>, t: u32, stats: &mut Stats) -> Vec<u32> {
+fn push_if_candidate(bd: &Boundary<'_>, queue: &mut CandidateQueue, t: u32) {
+    if !bd.inside[t as usize] && is_candidate(bd, t) {
+        queue.push(t, cost(bd, t));
+    }
+}
+
+/// Turns `t` interior; returns the vertices whose star changed and the triangles that
+/// turned interior (`t` and a filled pocket's).
+fn accept(bd: &mut Boundary<'_>, t: u32, stats: &mut Stats) -> (Vec<u32>, Vec<u32>) {
     let dt = bd.dt;
     let on_boundary: Vec<u32> = (3 * t..3 * t + 3).filter(|&h| bd.edges.contains(h)).collect();
     // §2.5: a single boundary edge `ab` whose apex `c` is already connected to it means the
@@ -125,6 +142,7 @@ fn accept(bd: &mut Boundary<'_>, t: u32, stats: &mut Stats) -> Vec<u32> {
     }
     stats.inflated_triangles += 1;
     let mut touched: Vec<u32> = (3 * t..3 * t + 3).map(|h| dt.origin(h)).collect();
+    let mut filled = vec![t];
     if closes_cycle {
         let ab = on_boundary[0];
         let across = |h: u32| match dt.twin(h) {
@@ -137,7 +155,8 @@ fn accept(bd: &mut Boundary<'_>, t: u32, stats: &mut Stats) -> Vec<u32> {
             touched.extend(pocket.iter().flat_map(|&p| (3 * p..3 * p + 3).map(|h| dt.origin(h))));
             touched.sort_unstable();
             touched.dedup();
+            filled.extend(pocket);
         }
     }
-    touched
+    (touched, filled)
 }
