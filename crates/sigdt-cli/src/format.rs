@@ -9,14 +9,16 @@ use sigdt::io::OutputFormat as Text;
 use sigdt::{Point, Reconstruction};
 use sigdt_lab::render::{render_svg, Layers, RenderOptions};
 
-/// An output format. Spelled `edges`, `loops`, `wkt`, `geojson` and `svg`; [`FromStr`] and
-/// [`Display`](fmt::Display) map between the two.
+/// An output format. Spelled `edges`, `loops`, `wkt`, `geojson`, `svg` and `png`;
+/// [`FromStr`] and [`Display`](fmt::Display) map between the two.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum OutputFormat {
     /// A text format of the kernel ([`sigdt::io::OutputFormat`]).
     Text(Text),
     /// A standalone SVG picture of the points, edges and filled loops, with a legend.
     Svg,
+    /// The same picture as a PNG image.
+    Png,
 }
 
 impl OutputFormat {
@@ -27,6 +29,7 @@ impl OutputFormat {
         OutputFormat::Text(Text::Wkt),
         OutputFormat::Text(Text::GeoJson),
         OutputFormat::Svg,
+        OutputFormat::Png,
     ];
 
     /// The lower-case name.
@@ -34,15 +37,18 @@ impl OutputFormat {
         match self {
             OutputFormat::Text(text) => text.name(),
             OutputFormat::Svg => "svg",
+            OutputFormat::Png => "png",
         }
     }
 
     /// The format implied by the file extension (case-insensitive): the kernel's text
-    /// extensions and `.svg`; anything else is `None`.
+    /// extensions, `.svg` and `.png`; anything else is `None`.
     pub fn from_path(path: &Path) -> Option<OutputFormat> {
-        let svg = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("svg"));
-        if svg {
+        let is = |ext: &str| path.extension().is_some_and(|e| e.eq_ignore_ascii_case(ext));
+        if is("svg") {
             Some(OutputFormat::Svg)
+        } else if is("png") {
+            Some(OutputFormat::Png)
         } else {
             Text::from_path(path).map(OutputFormat::Text)
         }
@@ -58,6 +64,11 @@ impl OutputFormat {
         match self {
             OutputFormat::Text(text) => sigdt::io::write_reconstruction(w, text, points, rec),
             OutputFormat::Svg => w.write_all(picture(points, rec).as_bytes()),
+            OutputFormat::Png => {
+                let bytes =
+                    crate::png::svg_to_png(&picture(points, rec)).map_err(io::Error::other)?;
+                w.write_all(&bytes)
+            }
         }
     }
 }
@@ -123,14 +134,16 @@ mod tests {
         for &f in OutputFormat::ALL {
             assert_eq!(f.to_string().parse::<OutputFormat>().unwrap(), f);
         }
-        let err = "png".parse::<OutputFormat>().unwrap_err().to_string();
-        assert!(err.contains("'png'") && err.contains("edges, loops, wkt, geojson, svg"), "{err}");
+        let err = "jpg".parse::<OutputFormat>().unwrap_err().to_string();
+        let names = "edges, loops, wkt, geojson, svg, png";
+        assert!(err.contains("'jpg'") && err.contains(names), "{err}");
         let format = |name: &str| OutputFormat::from_path(Path::new(name));
         assert_eq!(format("a.JSON"), Some(OutputFormat::Text(Text::GeoJson)));
         assert_eq!(format("a.txt"), Some(OutputFormat::Text(Text::Edges)));
         assert_eq!(format("a.loops"), Some(OutputFormat::Text(Text::Loops)));
         assert_eq!(format("a.SVG"), Some(OutputFormat::Svg));
-        assert_eq!(format("a.png"), None);
+        assert_eq!(format("a.PNG"), Some(OutputFormat::Png));
+        assert_eq!(format("a.jpg"), None);
     }
 
     #[test]

@@ -11,8 +11,8 @@ use sigdt::{Method, Options, Reconstruction, Vertices};
 
 use crate::format::OutputFormat;
 use crate::input::Input;
-use crate::messages::note;
-use crate::output::Output;
+use crate::messages::{note, UsageError};
+use crate::output::{is_dash, Output};
 
 /// `sigdt reconstruct`.
 #[derive(Debug, Args)]
@@ -42,10 +42,28 @@ pub struct ReconstructArgs {
 /// `sigdt reconstruct`.
 pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
     let output = Output::new(args.output.as_deref(), &args.input)?;
-    let format = args
-        .format
-        .or_else(|| args.output.as_deref().and_then(OutputFormat::from_path))
-        .unwrap_or_default();
+    let format = match (args.format, args.output.as_deref().filter(|p| !is_dash(p))) {
+        (Some(format), _) => format,
+        (None, None) => OutputFormat::default(),
+        (None, Some(out)) => match (OutputFormat::from_path(out), out.extension()) {
+            (Some(format), _) => format,
+            (None, None) => OutputFormat::default(),
+            // Edge text in a `.jpg` or `.pdf` would be a silent wrong answer.
+            (None, Some(ext)) => {
+                return Err(UsageError {
+                    command: "reconstruct",
+                    kind: clap::error::ErrorKind::InvalidValue,
+                    message: format!(
+                        "{}: '.{}' names no output format: use .edges, .txt, .loops, .wkt, \
+                         .geojson, .json, .svg or .png, or give --format",
+                        out.display(),
+                        ext.to_string_lossy()
+                    ),
+                }
+                .into());
+            }
+        },
+    };
     let points = input.points(&args.input)?;
     let options = Options { method: args.method, leaf_elimination: !args.no_leaf_elimination };
     let start = Instant::now();

@@ -12,11 +12,23 @@ fn output_file_and_extension_inference() {
     assert!(read("out.svg").starts_with("<svg") || read("out.svg").starts_with("<?xml"));
     sigdt_in(dir.path(), &["reconstruct", "square.xy", "--output", "out.wkt"], None).ok();
     assert!(read("out.wkt").starts_with("POLYGON (("), "{}", read("out.wkt"));
-    // An explicit --format wins over the extension; an unknown extension means edges.
+    // An explicit --format wins over the extension; no extension means edges.
     let args = ["reconstruct", "square.xy", "-o", "out.svg", "--format", "edges"];
     sigdt_in(dir.path(), &args, None).ok();
     assert_eq!(read("out.svg"), SQUARE_EDGES);
-    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "out.result"], None).ok();
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "result"], None).ok();
+    assert_eq!(read("result"), SQUARE_EDGES);
+    // `.png` is the picture; an extension that names no format is refused, not filled
+    // with edge text.
+    sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "out.png"], None).ok();
+    assert!(fs::read(dir.path().join("out.png")).unwrap().starts_with(b"\x89PNG\r\n"));
+    for name in ["out.jpg", "out.result"] {
+        let run = sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", name], None);
+        assert!(run.usage_error().stderr.contains("names no output format"), "{run}");
+        assert!(!dir.path().join(name).exists());
+    }
+    let args = ["reconstruct", "square.xy", "-o", "out.result", "--format", "edges"];
+    sigdt_in(dir.path(), &args, None).ok();
     assert_eq!(read("out.result"), SQUARE_EDGES);
     // `-o -` is stdout.
     sigdt_in(dir.path(), &["reconstruct", "square.xy", "-o", "-"], None)
