@@ -15,7 +15,7 @@
 //! points the default leaves without an edge, by category.
 use sigdt::internals::{discur_variant, DiscurVariant};
 use sigdt::Triangulation;
-use sigdt_lab::dataset::{data_dir, read_index};
+use sigdt_lab::dataset::{data_dir, read_index, ExactTally};
 use sigdt_lab::eval::is_exact;
 use std::collections::BTreeMap;
 use std::error::Error;
@@ -60,8 +60,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let dirs = if args.is_empty() { vec![data_dir("curves"), data_dir("real")] } else { args };
     let variants = variants();
     for dir in dirs {
-        // Per row label: cases, exact count per variant.
-        let mut tally: BTreeMap<String, (usize, Vec<usize>)> = BTreeMap::new();
+        let mut tally = ExactTally::default();
         // Per category: points, points without an edge (default variant, duplicates aside).
         let mut free: BTreeMap<String, (usize, usize)> = BTreeMap::new();
         for case in read_index(&dir)? {
@@ -69,17 +68,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             let dt = Triangulation::new(&points)?;
             let results: Vec<_> = variants.iter().map(|(_, v)| discur_variant(&dt, *v)).collect();
             let exact: Vec<bool> = results.iter().map(|r| is_exact(&r.edges, &truth)).collect();
-            let mut labels = vec![case.category.clone()];
-            if case.category == "manifold" && case.epsilon.is_some_and(|e| e < 1.0) {
-                labels.push("manifold eps<1".to_string());
-            }
-            for label in labels {
-                let entry = tally.entry(label).or_insert_with(|| (0, vec![0; variants.len()]));
-                entry.0 += 1;
-                for (count, &ok) in entry.1.iter_mut().zip(&exact) {
-                    *count += usize::from(ok);
-                }
-            }
+            tally.add(&case, &exact);
             let default = variants.iter().position(|(_, v)| *v == DiscurVariant::DEFAULT);
             let rec = &results[default.expect("the default is a variant")];
             let mut has_edge = vec![false; points.len()];
@@ -90,24 +79,28 @@ fn main() -> Result<(), Box<dyn Error>> {
             entry.1 += has_edge.iter().filter(|&&h| !h).count();
         }
         println!("\n{}\n", dir.display());
-        let columns: Vec<&str> =
-            COLUMNS.iter().copied().filter(|c| tally.contains_key(*c)).collect();
-        let head: Vec<String> = columns.iter().map(|c| format!("{c} ({})", tally[*c].0)).collect();
+        let columns: Vec<(&str, usize, &[usize])> = COLUMNS
+            .iter()
+            .filter_map(|&c| tally.row(c).map(|(cases, exact)| (c, cases, exact)))
+            .collect();
+        let head: Vec<String> =
+            columns.iter().map(|(c, cases, _)| format!("{c} ({cases})")).collect();
         println!("| variant | {} |", head.join(" | "));
         println!("|---|{}", "--:|".repeat(columns.len()));
         for (k, (name, _)) in variants.iter().enumerate() {
             let cells: Vec<String> = columns
                 .iter()
-                .map(|c| {
-                    let (cases, exact) = (tally[*c].0, tally[*c].1[k]);
-                    format!("{exact} ({:.1})", 100.0 * exact as f64 / cases as f64)
+                .map(|(_, cases, exact)| {
+                    format!("{} ({:.1})", exact[k], 100.0 * exact[k] as f64 / *cases as f64)
                 })
                 .collect();
             println!("| {name} | {} |", cells.join(" | "));
         }
         let paper: Vec<String> = columns
             .iter()
-            .map(|c| PAPER.iter().find(|(p, _)| p == c).map_or("–".into(), |p| p.1.to_string()))
+            .map(|(c, ..)| {
+                PAPER.iter().find(|(p, _)| p == c).map_or("–".into(), |p| p.1.to_string())
+            })
             .collect();
         println!("| paper (Table 2) | {} |", paper.join(" | "));
         println!("\npoints without an edge (default variant):");

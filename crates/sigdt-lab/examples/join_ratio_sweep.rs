@@ -15,9 +15,8 @@
 //! `--list CATEGORY`, the cases of that category that no ratio reconstructs go to stderr.
 use sigdt::internals::{sig_auto_with, SigAutoSteps, JOIN_RATIO};
 use sigdt::Triangulation;
-use sigdt_lab::dataset::{data_dir, read_index};
+use sigdt_lab::dataset::{data_dir, read_index, ExactTally};
 use sigdt_lab::eval::is_exact;
-use std::collections::BTreeMap;
 use std::error::Error;
 use std::path::PathBuf;
 
@@ -56,8 +55,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             }
         }
     }
-    // Per row label: cases, exact count per ratio.
-    let mut tally: BTreeMap<String, (usize, Vec<usize>)> = BTreeMap::new();
+    let mut tally = ExactTally::default();
     for case in read_index(&dir)? {
         let (name, category) = (case.name.as_str(), case.category.as_str());
         let eps = case.epsilon.unwrap_or(f64::INFINITY);
@@ -70,17 +68,7 @@ fn main() -> Result<(), Box<dyn Error>> {
                 is_exact(&sig_auto_with(&dt, &steps).edges, &truth)
             })
             .collect();
-        let mut labels = vec![category.to_string()];
-        if category == "manifold" && eps < 1.0 {
-            labels.push("manifold eps<1".to_string());
-        }
-        for label in labels {
-            let entry = tally.entry(label).or_insert_with(|| (0, vec![0; ratios.len()]));
-            entry.0 += 1;
-            for (count, &ok) in entry.1.iter_mut().zip(&exact) {
-                *count += usize::from(ok);
-            }
-        }
+        tally.add(&case, &exact);
         if list.as_deref() == Some(category) && !exact.contains(&true) {
             eprintln!("no ratio: {name} (n = {}, eps = {eps})", points.len());
         }
@@ -91,7 +79,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         .collect();
     println!("| category | cases | {} |", marks.join(" | "));
     println!("|---|--:|{}", "--:|".repeat(ratios.len()));
-    for (label, (cases, exact)) in &tally {
+    for (label, cases, exact) in tally.rows() {
         let cells: Vec<String> = exact.iter().map(|e| e.to_string()).collect();
         println!("| {label} | {cases} | {} |", cells.join(" | "));
     }

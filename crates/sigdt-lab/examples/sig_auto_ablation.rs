@@ -13,9 +13,8 @@
 //! tables.
 use sigdt::internals::{sig_auto_with, SigAutoSteps};
 use sigdt::Triangulation;
-use sigdt_lab::dataset::{data_dir, read_index};
+use sigdt_lab::dataset::{data_dir, read_index, ExactTally};
 use sigdt_lab::eval::is_exact;
-use std::collections::BTreeMap;
 use std::error::Error;
 use std::path::PathBuf;
 
@@ -44,8 +43,7 @@ fn main() -> Result<(), Box<dyn Error>> {
         })
         .collect();
     for dir in dirs {
-        // Per column label: cases, and exact count per variant.
-        let mut tally: BTreeMap<String, (usize, Vec<usize>)> = BTreeMap::new();
+        let mut tally = ExactTally::default();
         for case in read_index(&dir)? {
             let (points, truth) = case.read(&dir)?;
             let dt = Triangulation::new(&points)?;
@@ -53,27 +51,16 @@ fn main() -> Result<(), Box<dyn Error>> {
                 .iter()
                 .map(|(_, s)| is_exact(&sig_auto_with(&dt, s).edges, &truth))
                 .collect();
-            let mut labels = vec![case.category.clone()];
-            if case.category == "manifold" && case.epsilon.is_some_and(|e| e < 1.0) {
-                labels.push("manifold eps<1".to_string());
-            }
-            for label in labels {
-                let entry = tally.entry(label).or_insert_with(|| (0, vec![0; variants.len()]));
-                entry.0 += 1;
-                for (count, &ok) in entry.1.iter_mut().zip(&exact) {
-                    *count += usize::from(ok);
-                }
-            }
+            tally.add(&case, &exact);
         }
         println!("\n{}\n", dir.canonicalize().unwrap_or(dir.clone()).display());
-        let labels: Vec<&String> = tally.keys().collect();
         let heads: Vec<String> =
-            labels.iter().map(|l| format!("{l} ({})", tally[l.as_str()].0)).collect();
+            tally.rows().map(|(l, cases, _)| format!("{l} ({cases})")).collect();
         println!("| variant | {} |", heads.join(" | "));
-        println!("|---|{}", "--:|".repeat(labels.len()));
+        println!("|---|{}", "--:|".repeat(heads.len()));
         for (v, (name, _)) in variants.iter().enumerate() {
             let cells: Vec<String> =
-                labels.iter().map(|l| tally[l.as_str()].1[v].to_string()).collect();
+                tally.rows().map(|(_, _, exact)| exact[v].to_string()).collect();
             println!("| {name} | {} |", cells.join(" | "));
         }
     }

@@ -7,7 +7,7 @@
 //! all go through it. `index.csv` is read as CSV: a UTF-8 byte-order mark is skipped, fields
 //! may be quoted (`"a,b"`, with `""` for a quote), blank lines are skipped, and every problem
 //! is an error naming the file and line, as is a case listed twice.
-use std::collections::HashSet;
+use std::collections::{BTreeMap, HashSet};
 use std::path::{Path, PathBuf};
 
 use sigdt::{Edge, Error, Point, Result};
@@ -179,6 +179,46 @@ fn fields(row: &str) -> std::result::Result<Vec<String>, String> {
     }
 }
 
+/// The row label of the manifold cases sampled with ε < 1 (the paper's Fig. 12).
+pub const EPS_BELOW_1: &str = "manifold eps<1";
+
+/// Exact reconstructions per row for several variants of a method (ratios, switched-off
+/// steps, readings of a paper): a row per category, plus [`EPS_BELOW_1`]. The research
+/// examples print it as their table.
+#[derive(Debug, Clone, Default)]
+pub struct ExactTally {
+    /// Per row label: the number of cases, and the exact count of each variant.
+    rows: BTreeMap<String, (usize, Vec<usize>)>,
+}
+
+impl ExactTally {
+    /// Counts `case`, where `exact[k]` says whether variant `k` reconstructed it exactly.
+    pub fn add(&mut self, case: &Case, exact: &[bool]) {
+        let mut labels = vec![case.category.as_str()];
+        if case.category == "manifold" && case.epsilon.is_some_and(|e| e < 1.0) {
+            labels.push(EPS_BELOW_1);
+        }
+        for label in labels {
+            let entry =
+                self.rows.entry(label.to_string()).or_insert_with(|| (0, vec![0; exact.len()]));
+            entry.0 += 1;
+            for (count, &ok) in entry.1.iter_mut().zip(exact) {
+                *count += usize::from(ok);
+            }
+        }
+    }
+
+    /// The rows in label order: label, number of cases, exact count per variant.
+    pub fn rows(&self) -> impl Iterator<Item = (&str, usize, &[usize])> {
+        self.rows.iter().map(|(label, (cases, exact))| (label.as_str(), *cases, &exact[..]))
+    }
+
+    /// The row of `label`, if any case had it.
+    pub fn row(&self, label: &str) -> Option<(usize, &[usize])> {
+        self.rows.get(label).map(|(cases, exact)| (*cases, &exact[..]))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -217,5 +257,22 @@ mod tests {
         assert!(err.contains("not a case name"), "{err}");
         let err = index("name,category\na,open\n\na,sharp\n").unwrap_err().to_string();
         assert!(err.contains("index.csv:4:") && err.contains("listed twice"), "{err}");
+    }
+
+    #[test]
+    fn a_tally_counts_each_variant_per_category_and_eps_below_1() {
+        let cases = index("name,category,epsilon\na,manifold,0.5\nb,manifold,1.5\nc,open,\n");
+        let cases = cases.unwrap();
+        let mut tally = ExactTally::default();
+        for (case, exact) in cases.iter().zip([[true, false], [true, true], [false, true]]) {
+            tally.add(case, &exact);
+        }
+        let rows: Vec<(&str, usize, Vec<usize>)> =
+            tally.rows().map(|(l, n, e)| (l, n, e.to_vec())).collect();
+        assert_eq!(
+            rows,
+            [("manifold", 2, vec![2, 1]), (EPS_BELOW_1, 1, vec![1, 0]), ("open", 1, vec![0, 1])]
+        );
+        assert_eq!(tally.row("sharp"), None);
     }
 }
