@@ -3,7 +3,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use sigdt::io::parse_edges;
+use sigdt::io::{parse_edges, parse_edges_of};
 use std::io::BufReader;
 
 fuzz_target!(|data: &[u8]| {
@@ -11,6 +11,16 @@ fuzz_target!(|data: &[u8]| {
     let whole = parse_edges(data, "fuzz");
     if let Ok(edges) = &whole {
         assert!(edges.iter().all(|&[i, j]| i < j), "edge not [min, max]");
+    }
+    // For a graph on `n` points (from the second byte): indices below `n`, at most `3n`
+    // edges, and otherwise the same edges as the unbounded reader.
+    let n = data.get(1).map_or(0, |&b| b as usize);
+    match parse_edges_of(data, "fuzz", n) {
+        Ok(bounded) => {
+            assert!(bounded.iter().all(|&[_, j]| j < n) && bounded.len() <= 3 * n);
+            assert_eq!(Some(&bounded), whole.as_ref().ok(), "bounded read differs");
+        }
+        Err(e) => assert!(whole.is_err() || e.to_string().contains("fuzz:")),
     }
     let chunked = parse_edges(BufReader::with_capacity(capacity, data), "fuzz");
     match (&whole, &chunked) {

@@ -34,8 +34,9 @@
 //! 2D Points Curve Reconstruction Survey and Benchmark. 2021.
 use std::path::Path;
 
-use svgtypes::{SimplePathSegment, SimplifyingPathParser};
+use svgtypes::{PathParser, PathSegment, SimplePathSegment, SimplifyingPathParser};
 
+use super::eps_sampling::MAX_SEGMENTS;
 use sigdt::internals::distance;
 use sigdt::{Error, Point, Result};
 
@@ -235,6 +236,7 @@ fn subpaths(d: &str, name: &str, line: usize, curves: &mut Vec<BezierPath>) -> R
             curves.push(path);
         }
     };
+    check_arcs(d).map_err(fail)?;
     for segment in SimplifyingPathParser::from(d) {
         let segment = segment.map_err(|e| fail(format!("bad path data: {e}")))?;
         let (cubic, end) = match segment {
@@ -281,6 +283,13 @@ fn subpaths(d: &str, name: &str, line: usize, curves: &mut Vec<BezierPath>) -> R
         };
         if cubic.iter().any(|&p| p != at) {
             current.segments.push(cubic);
+            if current.segments.len() > MAX_SEGMENTS {
+                // An elliptical arc of radius 1e33 becomes about a million cubics (the
+                // conversion's tolerance is absolute): stop reading instead.
+                return Err(fail(format!(
+                    "a subpath of more than {MAX_SEGMENTS} cubic segments (a huge arc?)"
+                )));
+            }
         }
         at = end;
     }
@@ -293,6 +302,51 @@ fn subpaths(d: &str, name: &str, line: usize, curves: &mut Vec<BezierPath>) -> R
 fn rounding_apart(path: &BezierPath, at: Point, start: Point) -> bool {
     let scale = path.segments.iter().flatten().flatten().fold(0.0, |m: f64, v| m.max(v.abs()));
     at != start && !path.segments.is_empty() && distance(at, start) <= scale * 2f64.powi(-40)
+}
+
+/// Refuses path data with an elliptical arc that svgtypes would expand without bound.
+///
+/// svgtypes turns an arc into cubics to an absolute tolerance of 0.1, about `(11·r)^(1/6)`
+/// of them a turn: a radius past the limit below makes more than [`MAX_SEGMENTS`], and a
+/// radius of 1e33 takes seconds inside the parser, before any later limit can act. An arc's
+/// radius grows to half its chord when too small to span it, so the chord counts too: the
+/// current point is followed through the raw segments to measure it.
+fn check_arcs(d: &str) -> std::result::Result<(), String> {
+    let limit = 0.1 / 1.1163 * (MAX_SEGMENTS as f64).powi(6);
+    let (mut at, mut start) = ([0.0f64; 2], [0.0f64; 2]);
+    let to =
+        |abs: bool, at: [f64; 2], x: f64, y: f64| if abs { [x, y] } else { [at[0] + x, at[1] + y] };
+    for segment in PathParser::from(d) {
+        let Ok(segment) = segment else { break }; // the simplifying parser reports it
+        let end = match segment {
+            PathSegment::MoveTo { abs, x, y } => {
+                start = to(abs, at, x, y);
+                start
+            }
+            PathSegment::LineTo { abs, x, y }
+            | PathSegment::CurveTo { abs, x, y, .. }
+            | PathSegment::SmoothCurveTo { abs, x, y, .. }
+            | PathSegment::Quadratic { abs, x, y, .. }
+            | PathSegment::SmoothQuadratic { abs, x, y } => to(abs, at, x, y),
+            PathSegment::HorizontalLineTo { abs, x } => [if abs { x } else { at[0] + x }, at[1]],
+            PathSegment::VerticalLineTo { abs, y } => [at[0], if abs { y } else { at[1] + y }],
+            PathSegment::ClosePath { .. } => start,
+            PathSegment::EllipticalArc { abs, rx, ry, x, y, .. } => {
+                let end = to(abs, at, x, y);
+                let chord = 0.5 * (end[0] - at[0]).hypot(end[1] - at[1]);
+                let size = rx.abs().max(ry.abs()).max(chord);
+                if size.is_nan() || size > limit {
+                    return Err(format!(
+                        "an elliptical arc of radius {size:e} (or half its chord) would need \
+                         more than {MAX_SEGMENTS} cubic segments"
+                    ));
+                }
+                end
+            }
+        };
+        at = end;
+    }
+    Ok(())
 }
 
 /// The cubic tracing the straight segment from `p` to `q` at constant speed.
@@ -347,6 +401,24 @@ mod tests {
         assert_eq!(curves[0].segments[2], line_cubic([2.0, 2.0], [0.0, 0.0]));
         assert_eq!(curves[1].segments.len(), 3);
         assert!(parse("<svg><rect/></svg>").unwrap().is_empty());
+    }
+
+    #[test]
+    fn huge_arcs_and_paths_are_refused_before_they_are_expanded() {
+        let refused = |d: &str| parse(&format!("<path d='{d}'/>")).unwrap_err().to_string();
+        let err = refused("M 2 1 A 44 4.4e33 14 1 0 0 80");
+        assert!(err.contains("elliptical arc of radius 4.4e33"), "{err}");
+        // A small radius grows to span a far end point, or a far start (fuzz finds).
+        let err = refused("m 1 1 a 44 4.4e12 14 1 0 44 4.4e59");
+        assert!(err.contains("radius 2.2e59"), "{err}");
+        let err = refused("M 50,5e73 A 14,16 0,1 0 50,10 Z");
+        assert!(err.contains("radius 2.5e73"), "{err}");
+        // Ordinary arcs are read as cubics.
+        let arc = parse("<path d='M 0 0 A 1 1 0 0 1 2 0'/>").unwrap();
+        assert!((1..=8).contains(&arc[0].segments.len()));
+        let long: String = (0..=MAX_SEGMENTS).map(|k| format!(" L {k} {}", k % 2)).collect();
+        let err = refused(&format!("M 0 5{long}"));
+        assert!(err.contains("more than 4096 cubic segments"), "{err}");
     }
 
     #[test]

@@ -50,6 +50,10 @@ use sigdt::{Edge, Error, Point, Result, Triangulation};
 /// Dense evaluation parameters per cubic segment.
 pub const DENSE_STEPS: usize = 1000;
 
+/// The most cubic segments one path may have: 4·10⁶ dense points, a few hundred megabytes
+/// for the triangulation and the lfs (a 20,000-segment polygon used to ask for gigabytes).
+pub const MAX_SEGMENTS: usize = 4096;
+
 /// Parameter precision of the bisections, in segment units.
 const PRECISION: f64 = 1e-9;
 
@@ -101,8 +105,12 @@ pub fn lfs(path: &BezierPath) -> Result<DenseCurve> {
     if path.segments.iter().flatten().flatten().any(|v| !v.is_finite()) {
         return Err(bad("a control point is not finite".into()));
     }
-    if path.segments.len() > 1 << 20 {
-        return Err(bad(format!("{} segments is more than 2^20", path.segments.len())));
+    if path.segments.len() > MAX_SEGMENTS {
+        return Err(bad(format!(
+            "{} segments is more than {MAX_SEGMENTS} (each is evaluated at {DENSE_STEPS} \
+             parameters)",
+            path.segments.len()
+        )));
     }
     let n = DENSE_STEPS * path.segments.len() + usize::from(!path.closed);
     let points: Vec<Point> = (0..n).map(|k| path.point(k as f64 / DENSE_STEPS as f64)).collect();
