@@ -1,9 +1,9 @@
 //! Python bindings of `sigdt`, built by maturin as `sigdt._core`.
 //!
 //! This crate only converts types: numpy arrays in (copied once, so that a result depends
-//! only on the data at the call while the GIL is released); numpy arrays, dicts with named keys and the `Trace` class out; core errors to
-//! Python exceptions, panics to `InternalError`. The user-facing names, defaults and
-//! docstrings live in `python/sigdt`.
+//! only on the data at the call while the GIL is released); numpy arrays, dicts with named
+//! keys and the `Trace` class out; core errors to Python exceptions, panics to
+//! `InternalError`. The user-facing names, defaults and docstrings live in `python/sigdt`.
 mod convert;
 mod eval;
 mod interrupt;
