@@ -4,6 +4,7 @@
 //! A worker that exits with an error, crashes, prints nothing usable or outlives the time
 //! limit is recorded as a failure or a time-out of that one pair; the run goes on.
 
+use std::ffi::OsStr;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
@@ -66,18 +67,26 @@ pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
 
 /// Runs one worker and turns whatever happened into an [`Outcome`].
 fn run_one(exe: &Path, plan: &Plan<'_>, case: &dataset::Case, method: &str) -> Outcome {
-    let files = case.files(plan.dir);
-    let mut command = Command::new(exe);
-    command.arg("bench-worker").arg("--method").arg(method);
-    command.arg("--repeat").arg(plan.repeat.to_string()).arg(&files.points).arg(&files.gt);
-    if let Some(truth) = &files.truth {
-        command.arg("--truth").arg(truth);
-    }
-    command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
-    match command.spawn() {
+    let repeat = plan.repeat.to_string();
+    match spawn_worker(exe, &case.files(plan.dir), ["--method", method, "--repeat", &repeat]) {
         Err(e) => Outcome::Failed(format!("cannot start the worker: {e}")),
         Ok(child) => wait(child, plan.time_limit),
     }
+}
+
+/// Starts `sigdt bench-worker ARGS POINTS GT [--truth TRUTH]` on a case's files, its output
+/// piped.
+fn spawn_worker<A: AsRef<OsStr>>(
+    exe: &Path,
+    files: &dataset::CaseFiles,
+    args: impl IntoIterator<Item = A>,
+) -> std::io::Result<Child> {
+    let mut command = Command::new(exe);
+    command.arg("bench-worker").args(args).arg(&files.points).arg(&files.gt);
+    if let Some(truth) = &files.truth {
+        command.arg("--truth").arg(truth);
+    }
+    command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn()
 }
 
 /// Waits for `child` at most `limit`, killing it after that, and reads its result line.
@@ -138,12 +147,7 @@ fn finish(mut child: Child, limit: Duration) -> Result<String, Outcome> {
 pub fn fill_graph_epsilon(plan: &Plan<'_>, cases: &mut [Case]) -> Result<()> {
     let exe = std::env::current_exe().context("cannot locate the sigdt executable")?;
     for case in cases.iter_mut() {
-        let files = case.row.files(plan.dir);
-        let mut command = Command::new(&exe);
-        command.arg("bench-worker").arg("--epsilon").arg(&files.points).arg(&files.gt);
-        command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
-        case.graph_epsilon = command
-            .spawn()
+        case.graph_epsilon = spawn_worker(&exe, &case.row.files(plan.dir), ["--epsilon"])
             .ok()
             .and_then(|child| finish(child, plan.time_limit).ok())
             .and_then(|out| out.trim().strip_prefix("graph_epsilon=")?.parse::<f64>().ok())
@@ -162,15 +166,8 @@ pub fn import(label: &str, results: &Path, plan: &Plan<'_>, cases: &[Case]) -> R
     for (case, c) in cases.iter().enumerate() {
         let edges = results.join(format!("{}.edges", c.row.name));
         let outcome = if edges.is_file() {
-            let files = c.row.files(plan.dir);
-            let mut command = Command::new(&exe);
-            command.arg("bench-worker").arg("--score").arg(&edges);
-            command.arg(&files.points).arg(&files.gt);
-            if let Some(truth) = &files.truth {
-                command.arg("--truth").arg(truth);
-            }
-            command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
-            match command.spawn() {
+            let score = [OsStr::new("--score"), edges.as_os_str()];
+            match spawn_worker(&exe, &c.row.files(plan.dir), score) {
                 Err(e) => Outcome::Failed(format!("cannot start the worker: {e}")),
                 Ok(child) => match wait(child, plan.time_limit) {
                     Outcome::Done(mut run) => {

@@ -69,9 +69,7 @@ pub fn measure(
     options: &Options,
     repeat: usize,
 ) -> Result<Run> {
-    let pts = sigdt::io::read_points(points)?;
-    let gt = sigdt::io::read_edges_of(gt, pts.len())?;
-    let clean = truth.map(sigdt::io::read_points).transpose()?;
+    let (pts, gt, clean) = read_case(points, gt, truth)?;
     let run = || sigdt::reconstruct(&pts, options);
     let start = Instant::now();
     let rec = run()?;
@@ -92,17 +90,26 @@ pub fn measure(
 
 /// The graph-based epsilon of the case (`sigdt_lab::eval::graph_epsilon`).
 pub fn graph_epsilon(points: &Path, gt: &Path) -> Result<f64> {
+    let (pts, gt, _) = read_case(points, gt, None)?;
+    Ok(sigdt_lab::eval::graph_epsilon(&pts, &gt)?)
+}
+
+/// A case as read: points, ground truth, and the clean positions of the points if given.
+type CaseData = (Vec<Point>, Vec<Edge>, Option<Vec<Point>>);
+
+/// A case's points, its ground truth (checked against the points) and, if given, the clean
+/// positions of the points.
+fn read_case(points: &Path, gt: &Path, truth: Option<&Path>) -> Result<CaseData> {
     let pts = sigdt::io::read_points(points)?;
     let gt = sigdt::io::read_edges_of(gt, pts.len())?;
-    Ok(sigdt_lab::eval::graph_epsilon(&pts, &gt)?)
+    let clean = truth.map(sigdt::io::read_points).transpose()?;
+    Ok((pts, gt, clean))
 }
 
 /// Scores the edge file `edges` (another tool's result on the case) with status
 /// `imported`; the time is left NaN for the caller, who has the tool's own times.
 pub fn score_file(points: &Path, gt: &Path, truth: Option<&Path>, edges: &Path) -> Result<Run> {
-    let pts = sigdt::io::read_points(points)?;
-    let gt = sigdt::io::read_edges_of(gt, pts.len())?;
-    let clean = truth.map(sigdt::io::read_points).transpose()?;
+    let (pts, gt, clean) = read_case(points, gt, truth)?;
     let mut result = sigdt::io::read_edges_of(edges, pts.len())?;
     result.sort_unstable();
     result.dedup();
