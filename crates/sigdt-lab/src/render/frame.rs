@@ -27,7 +27,7 @@ pub(crate) struct Frame {
     pub height: f64,
     /// Height of the drawing alone, in pixels.
     drawing: f64,
-    /// Pixels per input unit.
+    /// Pixels per scaled unit (an input unit times `unit`).
     scale: f64,
     /// The exact power-of-two factor applied to input coordinates before subtracting `lo`
     /// (1, or 1/4 when the extent would overflow).
@@ -77,7 +77,7 @@ impl Frame {
         let at = [(width - w * scale) / 2.0, MARGIN + drawing];
         let spacing = median_nearest_distance(&finite) * unit * scale;
         let height = (2.0 * MARGIN + drawing).ceil();
-        Frame { width, height, drawing, scale: scale * unit, unit, lo, at, spacing }
+        Frame { width, height, drawing, scale, unit, lo, at, spacing }
     }
 
     /// Makes room for `top` pixels above the drawing (title) and `bottom` below it
@@ -91,9 +91,8 @@ impl Frame {
     /// `p` in picture coordinates (hundredths of a pixel, y pointing down), or `None` when
     /// it is not finite.
     pub fn map(&self, p: Point) -> Option<Px> {
-        let s = self.scale / self.unit; // pixels per scaled unit
-        let x = self.at[0] + (p[0] * self.unit - self.lo[0]) * s;
-        let y = self.at[1] - (p[1] * self.unit - self.lo[1]) * s;
+        let x = self.at[0] + (p[0] * self.unit - self.lo[0]) * self.scale;
+        let y = self.at[1] - (p[1] * self.unit - self.lo[1]) * self.scale;
         let (x, y) = ((100.0 * x).round(), (100.0 * y).round());
         // Far outside the page only when the input is not finite or the frame is degenerate.
         (x.abs() < 1e15 && y.abs() < 1e15).then_some([x as i64, y as i64])
@@ -101,7 +100,7 @@ impl Frame {
 
     /// A length in input units, in hundredths of a pixel.
     pub fn length(&self, d: f64) -> i64 {
-        let v = (100.0 * d * self.scale).round();
+        let v = (100.0 * d * self.unit * self.scale).round();
         if v.is_finite() && v.abs() < 1e15 {
             v as i64
         } else {
