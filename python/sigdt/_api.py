@@ -15,9 +15,6 @@ from ._input import LEAF_ELIMINATION, _as_points, _check_method
 from ._result import Reconstruction
 from .errors import InvalidInputError, SigdtWarning
 
-#: Statuses that say the result is not a faithful curve: a SigdtWarning names them.
-WARNING_STATUSES = ("sculpting-stuck", "network", "noisy")
-
 
 def _cores() -> int:
     try:
@@ -41,7 +38,8 @@ def _threads(n_jobs: Any) -> int | None:
 
 
 def _warn_about(results: list[Reconstruction], many: bool) -> None:
-    bad = [(k, r) for k, r in enumerate(results) if r.status in WARNING_STATUSES]
+    # Which statuses warn is decided once, in Rust (Status::is_warning).
+    bad = [(k, r) for k, r in enumerate(results) if r._fields["status_warns"]]
     if not bad:
         return
     k, first = bad[0]

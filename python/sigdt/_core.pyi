@@ -19,6 +19,7 @@ _Reconstruction = TypedDict(
         "path_offsets": npt.NDArray[np.int64],
         "status": str,
         "status_message": str,
+        "status_warns": bool,
         "left_out": npt.NDArray[np.int64],
         "left_out_reasons": list[str],
         "vertices": str,  # "input", "moved" or "new"

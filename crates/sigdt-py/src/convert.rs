@@ -110,7 +110,8 @@ pub fn chains_from(
 /// The dict `python/sigdt/_result.py` builds a `Reconstruction` from (the `_Reconstruction`
 /// TypedDict of `_core.pyi`): `edges`, `loop_vertices`, `loop_offsets`, `path_vertices`,
 /// `path_offsets` (int64 arrays, chains as by [`chains`]), `status` (its name) with
-/// `status_message` (what it means, for warnings), `left_out`
+/// `status_message` (what it means) and `status_warns` (whether it says the result is not a
+/// faithful curve: `Status::is_warning`), `left_out`
 /// (int64 indices) with `left_out_reasons` (their reasons' names, same order), `vertices`
 /// (`"input"`, `"moved"` or `"new"`) with `positions` (the `(k, 2)` float64 coordinates the
 /// edges index, or `None` for the input points), `duplicates` (int64 array) and `stats` (a
@@ -155,6 +156,7 @@ pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bo
     dict.set_item("path_offsets", path_offsets)?;
     dict.set_item("status", rec.status.name())?;
     dict.set_item("status_message", rec.status.to_string())?;
+    dict.set_item("status_warns", rec.status.is_warning())?;
     dict.set_item("left_out", indices(py, &left_out))?;
     dict.set_item("left_out_reasons", reasons)?;
     dict.set_item("vertices", kind)?;
