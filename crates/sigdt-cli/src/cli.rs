@@ -33,8 +33,9 @@ NaN or infinite coordinates, and lines that are not two numbers, are errors.";
 /// The result statuses, shown in `sigdt --help` and `sigdt reconstruct --help`.
 const STATUSES: &str = "\
 Result status (printed with --verbose; also in geojson's properties):
-  polygon          one closed simple polygon through every distinct point
-  polygons         several disjoint closed simple polygons through every distinct point
+  polygon          one closed simple polygon through every distinct point (sig-auto:
+                   but the outliers it leaves out; --verbose counts them)
+  polygons         several disjoint closed simple polygons, the same way
   sculpting-stuck  sculpting found no candidate while points were still inside: the loops
                    are simple but miss those points (a warning goes to stderr)
   curves           (sig-auto, graph filters) loops and open paths, not all points on loops

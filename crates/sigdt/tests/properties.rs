@@ -2,7 +2,8 @@
 //! curves ([MOW22] Theorem 1): a dense sample with non-uniformity u < 2 has every
 //! ground-truth edge in SIGDT, and SIG-CONNECT2D returns exactly the ground truth. Results
 //! do not depend on input order, translation, uniform scaling or a 90° rotation. SIG-AUTO
-//! returns the same closed curve, and keeps the curve open when a stretch of it is cut out.
+//! returns the same closed curve, keeps the curve open when a stretch of it is cut out, and
+//! never leaves out most of a noisy curve's samples as outliers.
 //! DISCUR's and PEEL's results do not depend on input order either, noisy input included.
 //! OPTIMALTRANSPORT, whose vertices are its own, keeps the invariants on them, stays inside
 //! the points' bounding box and scales exactly with the input.
@@ -181,6 +182,28 @@ proptest! {
             relabelled.sort_unstable();
             prop_assert_eq!(&relabelled, &base.edges, "{:?} depends on input order", method);
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    #[test]
+    fn sig_auto_keeps_most_of_a_noisy_curve(
+        sample in dense_blob(),
+        noise in 0.002f64..0.05,
+        seed in any::<u64>(),
+    ) {
+        // Outliers are the exception: however noisy the samples, SIG-AUTO never leaves out
+        // the majority of them (a detour must be the smaller part of its loop).
+        let points = uniform_noise(&sample.points, noise, seed).unwrap();
+        let options = Options { method: Method::SigAuto, ..Options::default() };
+        let rec = reconstruct(&points, &options).unwrap();
+        prop_assert!(check_reconstruction(&points, &rec).is_ok());
+        prop_assert!(
+            2 * rec.left_out.len() < points.len(),
+            "{} of {} points left out", rec.left_out.len(), points.len()
+        );
     }
 }
 

@@ -93,6 +93,19 @@ fn format_parser() -> impl TypedValueParser<Value = OutputFormat> {
     PossibleValuesParser::new(names).try_map(|s| s.parse::<OutputFormat>())
 }
 
+/// How many points the result leaves out, by reason: `0`, or `3 (outlier 2, inside 1)`.
+fn left_out_summary(rec: &Reconstruction) -> String {
+    let mut by_reason: std::collections::BTreeMap<&str, usize> = Default::default();
+    for l in &rec.left_out {
+        *by_reason.entry(l.reason.name()).or_default() += 1;
+    }
+    let reasons: Vec<String> = by_reason.iter().map(|(r, k)| format!("{r} {k}")).collect();
+    match reasons.is_empty() {
+        true => "0".to_string(),
+        false => format!("{} ({})", rec.left_out.len(), reasons.join(", ")),
+    }
+}
+
 /// Prints the `--verbose` summary of a run to stderr.
 fn summary(options: &Options, rec: &Reconstruction, ms: f64) {
     let s = &rec.stats;
@@ -112,6 +125,7 @@ fn summary(options: &Options, rec: &Reconstruction, ms: f64) {
         format!("edges:                     {}", rec.edges.len()),
         format!("loops:                     {}", rec.loops.len()),
         format!("paths:                     {}", rec.paths.len()),
+        format!("left out:                  {}", left_out_summary(rec)),
         format!("status:                    {} ({})", rec.status.name(), rec.status),
         format!("time:                      {ms:.3} ms"),
         format!("graph edges:               {}", s.graph_edges),

@@ -191,8 +191,10 @@ impl Status {
 impl std::fmt::Display for Status {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Status::Polygon => f.write_str("one closed polygon through every point"),
-            Status::Polygons => f.write_str("several closed polygons through every point"),
+            Status::Polygon => f.write_str("one closed polygon through every point not left out"),
+            Status::Polygons => {
+                f.write_str("several closed polygons through every point not left out")
+            }
             Status::SculptingStuck { left_out } => write!(
                 f,
                 "sculpting got stuck: {} point(s) left inside the boundary",

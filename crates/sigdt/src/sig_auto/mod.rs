@@ -59,6 +59,7 @@ mod closed_component;
 mod continuation;
 mod outliers;
 mod reading;
+mod shorter_reading;
 mod spanning_forests;
 mod spur_path;
 mod steps;
@@ -96,7 +97,6 @@ pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
 /// (`sigdt-lab/examples/sig_auto_ablation.rs`, `sigdt-lab/examples/join_ratio_sweep.rs`).
 #[doc(hidden)]
 pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
-    let join_ratio = steps.join_ratio;
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
@@ -135,7 +135,7 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
                     kept.retain(|v| !gone.contains(v));
                     continue;
                 }
-                read_components(sub, &forests, join_ratio)
+                read_components(sub, &forests, steps)
             }
         };
         let mut reading = Reading::new(sub, &read.pairs);
@@ -153,6 +153,9 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
         outliers.extend(cut);
         if steps.continuation {
             continuation::continue_smoothly(&mut reading);
+        }
+        if steps.shorter_reading && read.inside.is_empty() {
+            shorter_reading::prefer_shorter_reading(&mut reading);
         }
         let zigzags = reading.zigzags(MAX_SAMPLED_TURN.cos());
         let pairs: Vec<[u32; 2]> =
@@ -190,7 +193,8 @@ fn branches_far_off(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Vec
 }
 
 /// Steps 2 and 3 of the module docs on every component of `dt`.
-fn read_components(dt: &Triangulation, forests: &Forests, join_ratio: f64) -> Read {
+fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read {
+    let join_ratio = steps.join_ratio;
     let (graph, sigdt, tree) = (&forests.graph, &forests.sigdt, &forests.sigdt2);
     let mut stats = Stats {
         graph_edges: graph.len(),

@@ -20,7 +20,9 @@
 //!    `ab` joined, when every run vertex is farther than the spacing (the longest of `ab`
 //!    and the reading edges beyond `a` and `b`) from `ab` and from the continuations of
 //!    the reading beyond `a` and `b`, and when `ab` continues the reading as a sampled curve
-//!    would: `u < 2` between `ab` and the edges beyond, and at the vertices beyond.
+//!    would: `u < 2` between `ab` and the edges beyond, and at the vertices beyond; and when
+//!    the run is the smaller part of its loop or path (a run as large as the rest is the
+//!    curve, not a detour from it).
 //!
 //! # Complexity
 //! Branches: O(k) per component of `k` points. Detours: each walk from `a` stops at the
@@ -273,9 +275,37 @@ fn detour(
             .all(|w| u_below_2(reading.length(w[0], w[1]), reading.length(w[1], w[2])));
     (continues
         && nearest > spacing * (1.0 + TIE_SLACK)
+        && outnumbered(reading, [a, first], [b, run[run.len() - 1]], run.len())
         && !(steps.own_curves && own_curve(run.len(), inner, nearest))
         && !regular)
         .then(|| (nearest / spacing, run))
+}
+
+/// Whether the reading's loop or path through the run that leaves `a` by `a_run` and
+/// reaches `b` from `b_run` has more than `run` vertices outside the run. A detour is an
+/// excursion from a curve, so the curve it leaves must be the larger part: otherwise the
+/// run is the curve, and `ab` would cut it short (a noisy loop read as a shortcut between
+/// two of its own samples). The walk stops after `run + 1` vertices, so it costs no more
+/// than the run's own walk.
+fn outnumbered(
+    reading: &Reading<'_>,
+    [a, a_run]: [u32; 2],
+    [b, b_run]: [u32; 2],
+    run: usize,
+) -> bool {
+    let mut count = 0;
+    for (start, from) in [(b, b_run), (a, a_run)] {
+        let (mut previous, mut v) = (from, start);
+        while v != NONE && count <= run {
+            count += 1;
+            if v == a && start == b {
+                // Around a loop: the walk from `b` came back to `a`.
+                return count > run;
+            }
+            (previous, v) = (v, reading.other(v, previous));
+        }
+    }
+    count > run
 }
 
 /// The non-uniformity condition of [MOW22] Theorem 1 for two edges at one sample: the longer

@@ -87,6 +87,16 @@ impl<'a> Reading<'a> {
         distance(self.point(a), self.point(b))
     }
 
+    /// The summed length of the reading's edges.
+    pub(crate) fn total_length(&self) -> f64 {
+        self.pairs().iter().map(|&[a, b]| self.length(a, b)).sum()
+    }
+
+    /// The summed turning (radians) over every vertex.
+    pub(crate) fn total_turning(&self) -> f64 {
+        (0..self.neighbours.len() as u32).map(|v| self.turning(v)).sum()
+    }
+
     /// How much the reading turns at `v` if its neighbours were `slots` (0 at an end).
     pub(crate) fn turning_with(&self, v: u32, slots: [u32; 2]) -> f64 {
         match slots {

@@ -13,6 +13,9 @@ pub struct Steps {
     pub join_ratio: f64,
     /// Leave out spanning-tree branches far from the main path (step 1).
     pub branch_outliers: bool,
+    /// Replace an all-loops reading by CONNECT2D's when that is both shorter and turns less
+    /// (`shorter_reading`).
+    pub shorter_reading: bool,
     /// Cut detours out of the reading (step 4).
     pub detours: bool,
     /// Good continuation: turning-lowering 2-opt moves (step 5).
@@ -30,6 +33,7 @@ impl Default for Steps {
         Steps {
             join_ratio: JOIN_RATIO,
             branch_outliers: true,
+            shorter_reading: true,
             detours: true,
             continuation: true,
             tangent_rays: true,

@@ -1,0 +1,62 @@
+//! A second reading of closed curves, CONNECT2D's, taken when it is better by both
+//! measures of a curve reading: shorter and turning less.
+//!
+//! SIG-AUTO reads from SIGDT2 ([MOW22]), which holds the polygon of a closed curve sampled
+//! with ρ < 1 and u < 2. Polygon outlines given by their vertices (map outlines, census
+//! tracts: `data/real`'s `_k` cases) break u < 2 at almost every vertex, and SIGDT2 then
+//! misreads some of them. CONNECT2D ([OM13]) starts from BC₀, an approximation of the
+//! shortest boundary through every point, and follows such outlines where SIGDT2 does not.
+//! Neither start is right everywhere, so when SIG-AUTO's reading is closed loops through
+//! every point it reads, CONNECT2D's polygon of the same points is a candidate. It replaces
+//! the reading only when it is
+//!
+//! - **shorter**: the polygon of a densely sampled closed curve is the shortest closed tour
+//!   through its samples ([Gie99], [AM00]), and
+//! - **turns less** in total: the good-continuation measure that step 5
+//!   ([`continuation`](super::continuation)) lowers.
+//!
+//! Requiring both, instead of weighing one against the other, leaves no constant to choose.
+//! Either alone is wrong somewhere: at a sparsely sampled sharp corner the shortest tour cuts
+//! the corner off and comes back for it, which turns more; and two separate islands read as
+//! one polygon turn less but are longer by the two bridges. Ties (within [`TIE_SLACK`]) keep
+//! SIGDT2's reading.
+//!
+//! # Complexity
+//! O(k log k) for the `k` points read: a minimum spanning tree and one more
+//! inflate-and-sculpt, only when the reading is all loops.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+//! [OM13]: https://doi.org/10.1111/cgf.12227
+//! [Gie99]: https://doi.org/10.1145/304893.304971
+//! [AM00]: https://doi.org/10.1145/336154.336185
+use super::reading::Reading;
+use crate::baselines::connect2d::connect2d_on;
+use crate::proximity::sigdt::TIE_SLACK;
+use crate::result::Status;
+
+/// Replaces `reading` by CONNECT2D's polygon of the same points when the reading is loops
+/// through every vertex and the polygon is both shorter and turns less in total.
+pub(crate) fn prefer_shorter_reading(reading: &mut Reading<'_>) {
+    let dt = reading.dt;
+    let vertices = 0..dt.num_vertices() as u32;
+    if vertices.clone().any(|v| reading.degree(v) != 2) {
+        return;
+    }
+    let polygon = connect2d_on(dt);
+    if polygon.status != Status::Polygon {
+        return;
+    }
+    let mut vertex_of = vec![u32::MAX; dt.input_len()];
+    for v in vertices {
+        vertex_of[dt.input_index(v)] = v;
+    }
+    let pairs: Vec<[u32; 2]> =
+        polygon.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
+    let other = Reading::new(dt, &pairs);
+    let better = |ours: f64, theirs: f64| theirs < ours * (1.0 - TIE_SLACK);
+    if better(reading.total_length(), other.total_length())
+        && better(reading.total_turning(), other.total_turning())
+    {
+        *reading = other;
+    }
+}
