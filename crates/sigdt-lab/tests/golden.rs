@@ -37,7 +37,7 @@ const FLOORS_SIG_AUTO: &[(&str, usize)] = &[
     ("open", 55),
     ("multiple", 35),
     ("noisy", 37),
-    ("outliers", 13),
+    ("outliers", 16),
     ("bezier", 100),
     ("large", 2),
 ];

@@ -17,8 +17,8 @@
 //!    curve) is kept whole.
 //! 2. [`detour_outliers`], on the reading: a *detour* is a run of vertices between two
 //!    reading vertices `a` and `b` that are joined by a Delaunay edge. It is cut out, and
-//!    `ab` joined, when every run vertex is farther than the spacing (the longest of `ab`
-//!    and the reading edges beyond `a` and `b`) from `ab` and from the continuations of
+//!    `ab` joined, when every run vertex is farther than the spacing `|ab|` (the curve's
+//!    sample spacing there once the run is gone) from `ab` and from the continuations of
 //!    the reading beyond `a` and `b`, and when `ab` continues the reading as a sampled curve
 //!    would: `u < 2` between `ab` and the edges beyond, and at the vertices beyond; and when
 //!    the run is the smaller part of its loop or path (a run as large as the rest is the
@@ -235,7 +235,7 @@ fn detour(
     let (pa, pb, pa_beyond) = (reading.point(a), reading.point(b), reading.point(a_beyond));
     let (ab, a_side) = (reading.length(a, b), reading.length(a, a_beyond));
     // Distance from a run vertex to the shortcut and to the continuation beyond `a`; a vertex
-    // within the spacing known so far ends the walk, as it could never be cut out.
+    // within the spacing ends the walk, as it could never be cut out.
     let near_a = |v: u32| {
         let q = reading.point(v);
         segment_distance(q, pa, pb).min(ray(q, pa_beyond, pa))
@@ -243,7 +243,7 @@ fn detour(
     let mut run = Vec::new();
     let (mut previous, mut v) = (a, first);
     while v != b {
-        if v == NONE || v == a || near_a(v) <= ab.max(a_side) {
+        if v == NONE || v == a || near_a(v) <= ab {
             return None;
         }
         run.push(v);
@@ -261,7 +261,6 @@ fn detour(
     };
     let continues =
         u_below_2(ab, a_side) && u_below_2(ab, b_side) && regular(a_beyond) && regular(b_beyond);
-    let spacing = ab.max(a_side).max(b_side);
     let pb_beyond = reading.point(b_beyond);
     let nearest = run
         .iter()
@@ -274,11 +273,11 @@ fn detour(
             .windows(3)
             .all(|w| u_below_2(reading.length(w[0], w[1]), reading.length(w[1], w[2])));
     (continues
-        && nearest > spacing * (1.0 + TIE_SLACK)
+        && nearest > ab * (1.0 + TIE_SLACK)
         && outnumbered(reading, [a, first], [b, run[run.len() - 1]], run.len())
         && !(steps.own_curves && own_curve(run.len(), inner, nearest))
         && !regular)
-        .then(|| (nearest / spacing, run))
+        .then(|| (nearest / ab, run))
 }
 
 /// Whether the reading's loop or path through the run that leaves `a` by `a_run` and
