@@ -120,8 +120,11 @@ fn longest_inner_edge(
 /// points (a curve needs three samples to have a direction), closer to one another than to
 /// the curve. (Outliers lie apart from each other as well as from the curve.)
 fn own_curve(count: usize, inner: f64, off: f64) -> bool {
-    count >= 3 && inner < off
+    count >= OWN_CURVE_POINTS && inner < off
 }
+
+/// The fewest points that make a curve of their own: three, the fewest with a direction.
+const OWN_CURVE_POINTS: usize = 3;
 
 /// The longest path of the tree, by length: from the vertex farthest from `vertices[0]` to
 /// the vertex farthest from it.
@@ -266,7 +269,15 @@ fn detour(
         .iter()
         .map(|&o| near_a(o).min(ray(reading.point(o), pb_beyond, pb)))
         .fold(f64::INFINITY, f64::min);
-    let inner = run.windows(2).map(|w| reading.length(w[0], w[1])).fold(0.0, f64::max);
+    // The longest stretch of the run whose links are all shorter than its distance to the
+    // curve: three such points are a curve of their own, even when the run also reaches
+    // an outlier (a stroke read with an outlier at its tip).
+    let mut stretch = 1;
+    let mut longest_stretch = 1;
+    for w in run.windows(2) {
+        stretch = if reading.length(w[0], w[1]) < nearest { stretch + 1 } else { 1 };
+        longest_stretch = longest_stretch.max(stretch);
+    }
     // Along the reading, a run with u < 2 at every inner vertex is sampled like a curve.
     let regular = run.len() >= 3
         && run
@@ -275,7 +286,7 @@ fn detour(
     (continues
         && nearest > ab * (1.0 + TIE_SLACK)
         && outnumbered(reading, [a, first], [b, run[run.len() - 1]], run.len())
-        && !(steps.own_curves && own_curve(run.len(), inner, nearest))
+        && !(steps.own_curves && longest_stretch >= OWN_CURVE_POINTS)
         && !regular)
         .then(|| (nearest / ab, run))
 }
