@@ -21,12 +21,17 @@
 //!    than twice the second longest. If some loop edge is more than twice the longest edge
 //!    of the component's SIGDT spanning forest (a leaf edge reaching across), the
 //!    component's SIGDT pieces are used as chains instead, when each is a path with
-//!    branches of at most four samples (`spur_path`).
+//!    branches of at most four samples (`spur_path`). Loops that zigzag (the `noisy` test
+//!    below, which no sampled curve fails) give way the same way to the component's
+//!    SIGDT2 spanning tree read as a path: an open curve whose samples come closer to one
+//!    another across a bend than along it.
 //! 4. **Detours** (`outliers`): a run of the reading that leaves the curve by more than
 //!    the spacing and comes back to the next sample is cut out; its points are outliers.
 //! 5. **Good continuation** (`continuation`): 2-opt moves along Delaunay edges that lower
 //!    the reading's total turning while every new edge keeps `u < 2`, so that two curves
 //!    the graph merged (islands closer together than their spacing) come apart again.
+//! 6. **A second reading** (`shorter_reading`): when the reading is closed loops through
+//!    every point, CONNECT2D's polygon replaces it if it is both shorter and turns less.
 //!
 //! Points left out are listed in the result with the reason `outlier`; a result whose
 //! loops pass through every point that is not left out is a `polygon` or `polygons`.
@@ -216,14 +221,24 @@ fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read
         };
         let bound = join_ratio * sigdt.longest_edge(dt, &vertices) * (1.0 + TIE_SLACK);
         let within = |&[a, b]: &[u32; 2]| distance(dt.point(a), dt.point(b)) <= bound;
-        if !closed.edges.iter().all(within) {
-            if let Some(paths) = sigdt.pieces_as_paths(dt, &vertices) {
-                for path in paths {
-                    pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
-                    chains.add(&path);
-                }
-                continue;
+        // Loops that zigzag are no curve's polygon (no sampled curve zigzags, corners
+        // included): the component's own spanning tree, read as a path, is what is left (an
+        // open curve whose samples come closer across a bend than along it). Loops with an
+        // edge beyond the join bound give way to the SIGDT pieces.
+        let zigzags = || Reading::new(dt, &closed.edges).zigzags(MAX_SAMPLED_TURN.cos());
+        let mut paths = None;
+        if steps.zigzag_paths && zigzags() {
+            paths = tree.pieces_as_paths(dt, &vertices);
+        }
+        if paths.is_none() && !closed.edges.iter().all(within) {
+            paths = sigdt.pieces_as_paths(dt, &vertices);
+        }
+        if let Some(paths) = paths {
+            for path in paths {
+                pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
+                chains.add(&path);
             }
+            continue;
         }
         pairs.extend(closed.edges);
         inside.extend(closed.left_out);

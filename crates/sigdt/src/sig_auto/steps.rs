@@ -16,6 +16,8 @@ pub struct Steps {
     /// Replace an all-loops reading by CONNECT2D's when that is both shorter and turns less
     /// (`shorter_reading`).
     pub shorter_reading: bool,
+    /// Read a branching component as its spanning tree's path when its loops zigzag.
+    pub zigzag_paths: bool,
     /// Cut detours out of the reading (step 4).
     pub detours: bool,
     /// Good continuation: turning-lowering 2-opt moves (step 5).
@@ -34,6 +36,7 @@ impl Default for Steps {
             join_ratio: JOIN_RATIO,
             branch_outliers: true,
             shorter_reading: true,
+            zigzag_paths: true,
             detours: true,
             continuation: true,
             tangent_rays: true,
