@@ -222,22 +222,20 @@ fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read
         let bound = join_ratio * sigdt.longest_edge(dt, &vertices) * (1.0 + TIE_SLACK);
         let within = |&[a, b]: &[u32; 2]| distance(dt.point(a), dt.point(b)) <= bound;
         // Loops that zigzag are no curve's polygon (no sampled curve zigzags, corners
-        // included): the component's own spanning tree, read as a path, is what is left (an
-        // open curve whose samples come closer across a bend than along it). Loops with an
-        // edge beyond the join bound give way to the SIGDT pieces.
-        let zigzags = || Reading::new(dt, &closed.edges).zigzags(MAX_SAMPLED_TURN.cos());
+        // included): the component's own spanning tree, read as a path, replaces them when
+        // it does not zigzag (an open curve whose samples come closer across a bend than
+        // along it). Loops with an edge beyond the join bound give way to the SIGDT pieces.
+        let zigzags = |pairs: &[[u32; 2]]| Reading::new(dt, pairs).zigzags(MAX_SAMPLED_TURN.cos());
         let mut paths = None;
-        if steps.zigzag_paths && zigzags() {
-            paths = tree.pieces_as_paths(dt, &vertices);
+        if steps.zigzag_paths && zigzags(&closed.edges) {
+            paths = tree.pieces_as_paths(dt, &vertices).filter(|p| !zigzags(&path_pairs(p)));
         }
         if paths.is_none() && !closed.edges.iter().all(within) {
             paths = sigdt.pieces_as_paths(dt, &vertices);
         }
         if let Some(paths) = paths {
-            for path in paths {
-                pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
-                chains.add(&path);
-            }
+            pairs.extend(path_pairs(&paths));
+            paths.iter().for_each(|path| chains.add(path));
             continue;
         }
         pairs.extend(closed.edges);
@@ -246,6 +244,11 @@ fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read
     }
     pairs.extend(chains.join());
     Read { pairs, inside, stats }
+}
+
+/// The edges of `paths`.
+fn path_pairs(paths: &[Vec<u32>]) -> Vec<[u32; 2]> {
+    paths.iter().flat_map(|path| path.windows(2).map(|w| [w[0], w[1]])).collect()
 }
 
 /// SIG-CONNECT2D's reading of `dt`, for when a component's own loops could cross another
