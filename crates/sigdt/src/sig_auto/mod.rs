@@ -108,6 +108,9 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     // Vertices of `dt` still read, and those left out as outliers so far.
     let mut kept: Vec<u32> = (0..dt.num_vertices() as u32).collect();
     let mut outliers: Vec<u32> = Vec::new();
+    // The last round's reading with its detours cut out and their ends joined (vertices of
+    // `dt`), kept in case reading the rest again gets stuck where it did not.
+    let mut relinked: Option<(Vec<[u32; 2]>, Stats)> = None;
     for round in 0..MAX_ROUNDS {
         let subset;
         let sub = if round == 0 {
@@ -134,6 +137,7 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
                     Vec::new()
                 };
                 if !found.is_empty() {
+                    relinked = None;
                     outliers.extend(found.iter().map(|&v| whole(v)));
                     let gone: std::collections::HashSet<u32> =
                         found.iter().map(|&v| whole(v)).collect();
@@ -143,6 +147,18 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
                 read_components(sub, &forests, steps)
             }
         };
+        let read = match relinked.take() {
+            Some((pairs, stats)) if !read.inside.is_empty() => {
+                let mut vertex_of = vec![u32::MAX; dt.num_vertices()];
+                for v in 0..sub.num_vertices() as u32 {
+                    vertex_of[whole(v) as usize] = v;
+                }
+                let pairs =
+                    pairs.iter().map(|&[a, b]| [vertex_of[a as usize], vertex_of[b as usize]]);
+                Read { pairs: pairs.collect(), inside: Vec::new(), stats }
+            }
+            _ => read,
+        };
         let mut reading = Reading::new(sub, &read.pairs);
         let cut: Vec<u32> = match steps.detours {
             true => outliers::detour_outliers(&mut reading, steps).into_iter().map(whole).collect(),
@@ -150,6 +166,10 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
         };
         if !cut.is_empty() && round + 1 < MAX_ROUNDS {
             // Read the rest again: without the detours, the components are cleaner.
+            if read.inside.is_empty() {
+                let pairs = reading.pairs().into_iter().map(|[a, b]| [whole(a), whole(b)]);
+                relinked = Some((pairs.collect(), read.stats));
+            }
             let gone: std::collections::HashSet<u32> = cut.iter().copied().collect();
             kept.retain(|v| !gone.contains(v));
             outliers.extend(cut);
