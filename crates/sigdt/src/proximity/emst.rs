@@ -7,7 +7,7 @@
 //! # Complexity
 //! O(n log n).
 use crate::delaunay::{Shape, Triangulation};
-use crate::geometry::Edge;
+use crate::geometry::{squared_distance, Edge};
 use crate::graph::{EdgeMask, UnionFind};
 
 /// The EMST of a proper triangulation as an edge mask.
@@ -34,12 +34,17 @@ pub(crate) fn sorted_by_length(dt: &Triangulation, edges: impl Iterator<Item = u
     let mut keyed: Vec<(u64, u32, u32, u32)> = edges
         .map(|h| {
             let (a, b) = (dt.input_index(dt.origin(h)) as u32, dt.input_index(dt.dest(h)) as u32);
-            // Lengths are non-negative, so their bit patterns sort like the numbers.
-            (dt.length(h).to_bits(), a.min(b), a.max(b), h)
+            (length_key(dt, h), a.min(b), a.max(b), h)
         })
         .collect();
     keyed.sort_unstable();
     keyed.into_iter().map(|k| k.3).collect()
+}
+
+/// A key that sorts edges by length: the bits of the squared length (non-negative, so they
+/// sort like the numbers; squaring is monotone and needs no square root).
+fn length_key(dt: &Triangulation, h: u32) -> u64 {
+    squared_distance(dt.point(dt.origin(h)), dt.point(dt.dest(h))).to_bits()
 }
 
 /// Kruskal's algorithm over half-edges given in [`sorted_by_length`] order: the forest's
@@ -53,7 +58,7 @@ pub(crate) fn kruskal(dt: &Triangulation, sorted: impl IntoIterator<Item = u32>)
 pub(crate) fn merge_sorted(dt: &Triangulation, a: &[u32], b: &[u32]) -> Vec<u32> {
     let key = |h: u32| {
         let (x, y) = (dt.input_index(dt.origin(h)), dt.input_index(dt.dest(h)));
-        (dt.length(h).to_bits(), x.min(y), x.max(y))
+        (length_key(dt, h), x.min(y), x.max(y))
     };
     let (mut i, mut j) = (0, 0);
     let mut out = Vec::with_capacity(a.len() + b.len());

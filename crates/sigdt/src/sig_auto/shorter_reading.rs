@@ -15,6 +15,11 @@
 //! - **turns less** in total: the good-continuation measure that step 5
 //!   ([`continuation`](super::continuation)) lowers.
 //!
+//! The second reading is sought only when some vertex of the first turns by more than 60°,
+//! which no sample of a curve with ε < 1 does ([`MAX_SAMPLED_TURN`]): a reading that turns
+//! less everywhere already looks like a sampled curve, and skipping it keeps SIG-AUTO's time
+//! on smooth input close to SIG-CONNECT2D's.
+//!
 //! Requiring both, instead of weighing one against the other, leaves no constant to choose.
 //! Either alone is wrong somewhere: at a sparsely sampled sharp corner the shortest tour cuts
 //! the corner off and comes back for it, which turns more; and two separate islands read as
@@ -22,13 +27,14 @@
 //! SIGDT2's reading.
 //!
 //! # Complexity
-//! O(k log k) for the `k` points read: a minimum spanning tree and one more
-//! inflate-and-sculpt, only when the reading is all loops.
+//! O(k) to check the turns; O(k log k) for the `k` points read (a minimum spanning tree and
+//! one more inflate-and-sculpt) only when the reading is all loops with a turn over 60°.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 //! [OM13]: https://doi.org/10.1111/cgf.12227
 //! [Gie99]: https://doi.org/10.1145/304893.304971
 //! [AM00]: https://doi.org/10.1145/336154.336185
+use super::continuation::MAX_SAMPLED_TURN;
 use super::reading::Reading;
 use crate::baselines::connect2d::connect2d_on;
 use crate::proximity::sigdt::TIE_SLACK;
@@ -40,6 +46,10 @@ pub(crate) fn prefer_shorter_reading(reading: &mut Reading<'_>) {
     let dt = reading.dt;
     let vertices = 0..dt.num_vertices() as u32;
     if vertices.clone().any(|v| reading.degree(v) != 2) {
+        return;
+    }
+    let cos_limit = MAX_SAMPLED_TURN.cos();
+    if !vertices.clone().any(|v| reading.turns_more_than(v, cos_limit)) {
         return;
     }
     let polygon = connect2d_on(dt);

@@ -40,7 +40,11 @@ impl Forests {
             dt,
             dt.edge_halfedges().filter(|&h| graph.contains(h) && !sigdt.contains(h)),
         );
-        let sigdt2_edges = kruskal(dt, merge_sorted(dt, &sigdt_forest, &leaf_edges));
+        // Without leaf edges, SIGDT2 is SIGDT and so are their forests.
+        let sigdt2_edges = match leaf_edges.is_empty() {
+            true => sigdt_forest.clone(),
+            false => kruskal(dt, merge_sorted(dt, &sigdt_forest, &leaf_edges)),
+        };
         Forests {
             sigdt: Tree::new(dt, &sigdt_forest),
             sigdt2: Tree::new(dt, &sigdt2_edges),
