@@ -123,6 +123,10 @@ report: build py-build
 	  for f in sweep.csv rmse.svg exact.svg; do cp $(SWEEPS)/$$k/$$f $(REPORT)/sweeps/$$k-$$f; done; \
 	done
 
+REAL_WINS := mp7_octopus16_lfs030_out03 pysal_10740_r167_k1 mp7_Bone20_lfs030_noise0.002 \
+  mp7_spring11_lfs030
+REAL_FAILURES := wdb_river6649_k1 gshhs_island81_k1 pysal_chicago77_r37_k1 \
+  mp7_apple11_lfs030_out07 mp7_dog10_lfs030_noise0.002 gshhs_arch_society_k1
 ## pictures: the README picture (what `make demo` draws), the steps of docs/steps.md and the
 ## wins and failures of SIG-AUTO in docs/sig-auto.md (from $(DATA)).
 pictures: build py-build
@@ -144,6 +148,15 @@ pictures: build py-build
 	  glyph_DejaVuSansCondensed_U0050_c0; do \
 	  $(SIGDT) render $(DATA)/$$c.xy --gt $(DATA)/$$c.gt --method sig-auto --width 420 \
 	    -o docs/images/sig-auto/$$c.sig-auto.svg; \
+	done
+	mkdir -p docs/images/sig-auto/real
+	for c in $(REAL_WINS) $(REAL_FAILURES); do \
+	  $(SIGDT) render $(REAL)/$$c.xy --gt $(REAL)/$$c.gt --method sig-auto --width 420 \
+	    -o docs/images/sig-auto/real/$$c.sig-auto.svg; \
+	done
+	for c in $(REAL_WINS); do \
+	  $(SIGDT) render $(REAL)/$$c.xy --gt $(REAL)/$$c.gt --method sig-connect2d --width 420 \
+	    -o docs/images/sig-auto/real/$$c.sig-connect2d.svg; \
 	done
 
 clean:

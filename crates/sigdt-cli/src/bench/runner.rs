@@ -33,9 +33,20 @@ pub struct Plan<'a> {
     pub jobs: usize,
 }
 
+/// The executable that workers run: this process's own. On Linux that is `/proc/self/exe`,
+/// which stays the running binary even when a rebuild replaces the file at its path during
+/// a long bench (the path would then start the new binary, or nothing).
+fn worker_exe() -> Result<PathBuf> {
+    let own = Path::new("/proc/self/exe");
+    if own.exists() {
+        return Ok(own.to_path_buf());
+    }
+    std::env::current_exe().context("cannot locate the sigdt executable")
+}
+
 /// Runs `plan` over `cases`; entries are in (case, method) order whatever `jobs` is.
 pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
-    let exe = std::env::current_exe().context("cannot locate the sigdt executable")?;
+    let exe = worker_exe()?;
     let tasks: Vec<(usize, &String)> =
         (0..cases.len()).flat_map(|c| plan.methods.iter().map(move |m| (c, m))).collect();
     let bar = ProgressBar::new(tasks.len() as u64);
@@ -145,7 +156,7 @@ fn finish(mut child: Child, limit: Duration) -> Result<String, Outcome> {
 /// limit (on a ground truth with crossing edges it can take minutes); `None` where the
 /// files cannot be read, the computation fails or runs out of time.
 pub fn fill_graph_epsilon(plan: &Plan<'_>, cases: &mut [Case]) -> Result<()> {
-    let exe = std::env::current_exe().context("cannot locate the sigdt executable")?;
+    let exe = worker_exe()?;
     for case in cases.iter_mut() {
         case.graph_epsilon = spawn_worker(&exe, &case.row.files(plan.dir), ["--epsilon"])
             .ok()
@@ -160,7 +171,7 @@ pub fn fill_graph_epsilon(plan: &Plan<'_>, cases: &mut [Case]) -> Result<()> {
 /// `DIR/times.csv` with `name,time_ms` rows) as method `label`, each in a worker process
 /// under the plan's time limit (scoring a wild result, with many crossing edges, is slow).
 pub fn import(label: &str, results: &Path, plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
-    let exe = std::env::current_exe().context("cannot locate the sigdt executable")?;
+    let exe = worker_exe()?;
     let times = read_times(&results.join("times.csv"))?;
     let mut entries = Vec::new();
     for (case, c) in cases.iter().enumerate() {

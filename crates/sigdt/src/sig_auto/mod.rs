@@ -27,11 +27,14 @@
 //!    another across a bend than along it.
 //! 4. **Detours** (`outliers`): a run of the reading that leaves the curve by more than
 //!    the spacing and comes back to the next sample is cut out; its points are outliers.
+//!    A detour is the smaller part of its loop or path. The rest is read again; if that
+//!    gets sculpting stuck where the cut reading did not, the cut reading is kept.
 //! 5. **Good continuation** (`continuation`): 2-opt moves along Delaunay edges that lower
 //!    the reading's total turning while every new edge keeps `u < 2`, so that two curves
 //!    the graph merged (islands closer together than their spacing) come apart again.
 //! 6. **A second reading** (`shorter_reading`): when the reading is closed loops through
-//!    every point, CONNECT2D's polygon replaces it if it is both shorter and turns less.
+//!    every point and turns somewhere by more than 60°, CONNECT2D's polygon replaces it if
+//!    it is both shorter and turns less.
 //!
 //! Points left out are listed in the result with the reason `outlier`; a result whose
 //! loops pass through every point that is not left out is a `polygon` or `polygons`.
@@ -53,7 +56,8 @@
 //!   Delaunay edge of all points, which could cross another component), the reading is
 //!   SIG-CONNECT2D's (before steps 4 and 5).
 //! - A point is left out only by the outlier rule, which never applies to a point within
-//!   the sample spacing of the curve through its neighbours: noisy samples stay in.
+//!   the sample spacing of the curve through its neighbours: noisy samples stay in. A
+//!   detour never holds most of its loop or path, so a curve is never left out in bulk.
 //!
 //! # Complexity
 //! O(n log n) time per round, O(n) memory, on curve input.
