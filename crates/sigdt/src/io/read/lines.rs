@@ -147,6 +147,13 @@ pub(super) fn coordinate(field: &str) -> Result<f64, String> {
 
 /// Why `field` is not a number, naming an unsupported separator inside it if it has one.
 pub(super) fn not_a_number(field: &str) -> String {
+    if field.contains([' ', '\t']) {
+        // Spaces and tabs are separators, except in a line that also has a comma.
+        return format!(
+            "{} is not a number: a line is two numbers separated by spaces, tabs or one comma",
+            quoted(field)
+        );
+    }
     let separator = field.chars().find(|&c| c.is_whitespace() || matches!(c, ';' | '|'));
     match separator {
         Some(c) => format!(

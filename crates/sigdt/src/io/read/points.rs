@@ -109,6 +109,13 @@ fn plain<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result<Vec<Poin
     while let Some(line) = lines.next_content()? {
         let point = match xy(line) {
             Ok(p) => Ok(Some(p)),
+            Err(_) if first && foreign_format(line).is_some() => {
+                let format = foreign_format(line).unwrap_or_default();
+                Err(format!(
+                    "this is {format}, not a point file: write one point per line ('x y' or \
+                     'x,y')"
+                ))
+            }
             Err(_) if first && is_header(line) => Ok(None),
             Err(message) => Err(message),
         };
@@ -124,6 +131,31 @@ fn plain<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result<Vec<Poin
 /// A plain point line: exactly two finite numbers.
 fn xy(line: &str) -> Result<Point, String> {
     pair(line, "numbers (x y)", coordinate)
+}
+
+/// The geometry format a first line is written in, when it is one sigdt does not read:
+/// GeoJSON (or other JSON) starts with `{` or `[`, WKT with a geometry keyword. Named in the
+/// error, so that such a file is neither read as a header nor reported as a bad number.
+fn foreign_format(line: &str) -> Option<String> {
+    if line.starts_with(['{', '[']) {
+        return Some("GeoJSON or other JSON".to_string());
+    }
+    const WKT: [&str; 7] = [
+        "GEOMETRYCOLLECTION",
+        "MULTIPOLYGON",
+        "MULTILINESTRING",
+        "MULTIPOINT",
+        "POLYGON",
+        "LINESTRING",
+        "POINT",
+    ];
+    let word: String = line.chars().take_while(char::is_ascii_alphabetic).collect();
+    let keyword = WKT.iter().find(|k| word.eq_ignore_ascii_case(k))?;
+    // A keyword, an optional Z, M or ZM, then `(` or EMPTY: not a header such as `point x`.
+    let rest = line[word.len()..].trim_start().to_ascii_uppercase();
+    let rest = ["ZM", "Z", "M"].iter().find_map(|d| rest.strip_prefix(d)).unwrap_or(&rest);
+    let rest = rest.trim_start();
+    (rest.starts_with('(') || rest.starts_with("EMPTY")).then(|| format!("WKT ({keyword})"))
 }
 
 /// Whether a plain line is a header: a line of names. Every field has a letter and none
@@ -216,6 +248,26 @@ mod tests {
             let text = format!("{header}\n0 0\n");
             assert_eq!(parse(&text, None).unwrap(), vec![[0.0, 0.0]], "{header}");
         }
+    }
+
+    #[test]
+    fn wkt_and_geojson_are_named_not_read_as_a_header_or_a_bad_number() {
+        for (text, format) in [
+            ("MULTIPOINT ((1 2), (3 4), (5 7))\n", "WKT (MULTIPOINT)"),
+            ("point(1 2)\n", "WKT (POINT)"),
+            ("POLYGON((0 0, 1 0, 1 1, 0 0))\n", "WKT (POLYGON)"),
+            ("{\"type\":\"MultiPoint\",\"coordinates\":[[1,2],[3,4]]}\n", "GeoJSON or other JSON"),
+            ("[[1, 2], [3, 4]]\n", "GeoJSON or other JSON"),
+        ] {
+            let e = error(parse(text, None));
+            assert!(e.starts_with(&format!("1: this is {format}, not a point file")), "{e}");
+        }
+        // Headers that start with a WKT word stay headers.
+        for header in ["points x", "point x", "Point,Y"] {
+            assert_eq!(parse(&format!("{header}\n1 2\n"), None).unwrap(), vec![[1.0, 2.0]]);
+        }
+        let e = error(parse("POINT Z (1 2 3)\n", None));
+        assert!(e.starts_with("1: this is WKT (POINT)"), "{e}");
     }
 
     #[test]
