@@ -34,7 +34,9 @@
 //!
 //! # Degenerate input
 //! No edge gives 0. A point of the polygon touching a disjoint feature (a self-touching
-//! ground truth) with a positive distance to the samples gives infinity. Self loops and
+//! ground truth) with a positive distance to the samples gives infinity, and so does a
+//! ground truth whose edges cross (found first by a sweep, [`crossing`](super::crossing),
+//! without the searches, which take quadratic time on such input). Self loops and
 //! repeated edges are ignored.
 //!
 //! # Complexity
@@ -46,6 +48,7 @@
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 //! - [Rup95] J. Ruppert. A Delaunay refinement algorithm for quality 2-dimensional mesh
 //!   generation. Journal of Algorithms 18(3), 1995.
+use super::crossing::proper_crossing;
 use super::features::{arc_edges, Features, Terms};
 use super::input::{check_edges, check_points, proper_edges};
 use sigdt::{Edge, Point, Result};
@@ -93,6 +96,10 @@ pub fn epsilon(points: &[Point], gt: &[Edge], variant: EpsilonVariant) -> Result
         }
     };
     let edges = proper_edges(gt);
+    if proper_crossing(points, &edges).is_some() {
+        // The curve meets itself there: its local feature size is 0 (every variant).
+        return Ok(f64::INFINITY);
+    }
     let mut vertices: Vec<usize> = edges.iter().flatten().copied().collect();
     vertices.sort_unstable();
     vertices.dedup();
@@ -212,5 +219,15 @@ mod tests {
             assert!(epsilon(&dup, &[[0, 1], [1, 2], [2, 3], [0, 3]], v).is_ok());
         }
         assert!(graph_epsilon(&line, &[[0, 4]]).is_err());
+    }
+
+    #[test]
+    fn a_ground_truth_that_crosses_itself_has_infinite_epsilon_in_every_variant() {
+        // A bow tie: 0-2 and 1-3 cross at (0.5, 0.5).
+        let pts = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let bow_tie = [[0, 2], [2, 1], [1, 3], [3, 0]];
+        for v in [EpsilonVariant::Graph, EpsilonVariant::Ruppert, EpsilonVariant::default()] {
+            assert_eq!(epsilon(&pts, &bow_tie, v).unwrap(), f64::INFINITY, "{v:?}");
+        }
     }
 }

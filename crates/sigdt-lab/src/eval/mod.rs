@@ -8,6 +8,7 @@
 
 mod area;
 mod bvh;
+mod crossing;
 mod distance;
 mod epsilon;
 mod exact;
