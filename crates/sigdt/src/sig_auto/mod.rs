@@ -32,9 +32,10 @@
 //! 5. **Good continuation** (`continuation`): 2-opt moves along Delaunay edges that lower
 //!    the reading's total turning while every new edge keeps `u < 2`, so that two curves
 //!    the graph merged (islands closer together than their spacing) come apart again.
-//! 6. **A second reading** (`shorter_reading`): when the reading is closed loops through
-//!    every point and turns somewhere by more than 60°, CONNECT2D's polygon replaces it if
-//!    it is both shorter and turns less.
+//! 6. **A second reading** (`shorter_reading`): when the reading leaves no point on its own
+//!    and turns somewhere by more than 60°, CONNECT2D's polygon replaces it if it keeps
+//!    every edge of the open paths and is both shorter and turns less (paths counted as
+//!    closed by their chords).
 //!
 //! Points left out are listed in the result with the reason `outlier`; a result whose
 //! loops pass through every point that is not left out is a `polygon` or `polygons`.

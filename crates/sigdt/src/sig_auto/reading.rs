@@ -87,6 +87,25 @@ impl<'a> Reading<'a> {
         distance(self.point(a), self.point(b))
     }
 
+    /// Every open path (from an end with one neighbour to the other end), each once.
+    pub(crate) fn open_paths(&self) -> Vec<Vec<u32>> {
+        let mut paths = Vec::new();
+        for start in (0..self.neighbours.len() as u32).filter(|&v| self.degree(v) == 1) {
+            let [x, y] = self.neighbours(start);
+            let mut path = vec![start, if x == NONE { y } else { x }];
+            while let [.., previous, v] = path[..] {
+                if self.degree(v) != 2 {
+                    break;
+                }
+                path.push(self.other(v, previous));
+            }
+            if start < path[path.len() - 1] {
+                paths.push(path);
+            }
+        }
+        paths
+    }
+
     /// The summed length of the reading's edges.
     pub(crate) fn total_length(&self) -> f64 {
         self.pairs().iter().map(|&[a, b]| self.length(a, b)).sum()

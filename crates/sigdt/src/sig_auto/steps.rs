@@ -13,8 +13,8 @@ pub struct Steps {
     pub join_ratio: f64,
     /// Leave out spanning-tree branches far from the main path (step 1).
     pub branch_outliers: bool,
-    /// Replace an all-loops reading by CONNECT2D's when that is both shorter and turns less
-    /// (`shorter_reading`).
+    /// Replace the reading by CONNECT2D's polygon when that keeps the open paths' edges and
+    /// is both shorter and turns less (`shorter_reading`).
     pub shorter_reading: bool,
     /// Read a branching component as its spanning tree's path when its loops zigzag.
     pub zigzag_paths: bool,
