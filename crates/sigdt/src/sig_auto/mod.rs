@@ -50,7 +50,9 @@
 //!   apart is never closed by a join; when its SIGDT2 component's spanning tree is the
 //!   sample path (dense sampling), it comes back as that path. A component that must be
 //!   inflated (its tree branches beyond what small branches explain) can still come back
-//!   closed.
+//!   closed, and the second reading (step 6) may merge a path with a loop beside it; it
+//!   never closes a path on its own (the polygon that keeps all of a path's edges is the
+//!   path plus its chord, not shorter than itself).
 //! - Separate curves whose SIGDT2 components are separate (each curve sampled more densely
 //!   than the gap between them) are reconstructed independently, nested or not.
 //! - When the fallback applies (a loop of a component's own triangulation that is not a
