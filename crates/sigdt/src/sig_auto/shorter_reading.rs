@@ -1,5 +1,5 @@
-//! A second reading of closed curves, CONNECT2D's, taken when it is better by both
-//! measures of a curve reading: shorter and turning less.
+//! A second reading, CONNECT2D's closed polygon, taken when it is better by both measures
+//! of a curve reading: shorter and turning less.
 //!
 //! SIG-AUTO reads from SIGDT2 ([MOW22]), which holds the polygon of a closed curve sampled
 //! with ρ < 1 and u < 2. Polygon outlines given by their vertices (map outlines, census
@@ -31,7 +31,8 @@
 //!
 //! # Complexity
 //! O(k) to check the turns; O(k log k) for the `k` points read (a minimum spanning tree and
-//! one more inflate-and-sculpt) only when the reading has a turn over 60°.
+//! one more inflate-and-sculpt) only when the reading has a turn over 60° or several open
+//! curves (one open path through every point is never replaced, so it is not tried).
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 //! [OM13]: https://doi.org/10.1111/cgf.12227
@@ -55,6 +56,11 @@ pub(crate) fn prefer_shorter_reading(reading: &mut Reading<'_>) {
     // With open paths the chords closing them turn sharply, so only loops alone can look
     // like a sampled curve everywhere.
     let paths = reading.open_paths();
+    if paths.len() == 1 && paths[0].len() == dt.num_vertices() {
+        // One path through every point: the only polygon that keeps all its edges is the
+        // path plus its chord, which is not shorter than itself.
+        return;
+    }
     let cos_limit = MAX_SAMPLED_TURN.cos();
     if paths.is_empty() && !vertices.clone().any(|v| reading.turns_more_than(v, cos_limit)) {
         return;
