@@ -80,6 +80,23 @@ impl<'a> Summary<'a> {
         let cases = &self.data.cases;
         (0..cases.len()).rev().max_by_key(|&i| cases[i].row.n_points)
     }
+
+    /// The case whose size is nearest `target` points by ratio, among those within a factor
+    /// of 2 of it (first on ties).
+    pub fn nearest_size(&self, target: usize) -> Option<usize> {
+        let cases = &self.data.cases;
+        let ratio = |i: usize| (cases[i].row.n_points as f64 / target as f64).ln().abs();
+        (0..cases.len())
+            .filter(|&i| ratio(i) <= std::f64::consts::LN_2)
+            .min_by(|&a, &b| ratio(a).total_cmp(&ratio(b)))
+    }
+
+    /// The cases of `category` within a factor of 2 of `target` points.
+    pub fn sized_about(&self, category: &str, target: usize) -> Vec<usize> {
+        let within = |n: usize| n * 2 >= target && n <= 2 * target;
+        let cases = self.in_category(category);
+        cases.into_iter().filter(|&i| within(self.data.cases[i].row.n_points)).collect()
+    }
 }
 
 /// An exact-reconstruction count.

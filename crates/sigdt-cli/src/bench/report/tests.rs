@@ -128,6 +128,12 @@ fn exact_table_follows_table_2() {
     }
     // Mean manifold runtime: 2.00 ms against 0.50 ms, the smaller in bold.
     assert!(sig.contains("| 2.00 |") && crust.contains("| **0.50** |"), "{sig}\n{crust}");
+    // At the paper's mean size (m2 and m3, within a factor 2 of 260 points): 2.50 against
+    // 0.50. The 9,991-point case is both the paper-sized large case and the largest: one
+    // column.
+    assert!(header.contains("manifold mean ms, n ≈ 260 (2 cases)"), "{header}");
+    assert!(sig.contains("| 2.00 | 2.50 |"), "{sig}");
+    assert_eq!(header.matches("`o1`").count(), 1, "{header}");
 }
 
 #[test]
@@ -178,4 +184,15 @@ fn empty_data_gives_a_report() {
     let (md, names, _) = report(&BenchData::default());
     assert!(md.contains("## Exact reconstruction") && md.contains("Not computed."));
     assert_eq!(names, ["report.md", "results.csv", "accuracy.svg", "runtime.svg"]);
+}
+
+#[test]
+fn runtime_columns_at_the_papers_large_size_and_the_largest() {
+    // A 100,000-point case beside the 9,991-point one: both get a column, 10⁴ first.
+    let mut data = sample();
+    data.cases.push(case("big", "open", 100_000, None));
+    let (md, _, _) = report(&data);
+    let header = row(&md, "| Method |");
+    let (near, large) = (header.find("`o1` (n = 9991) ms"), header.find("`big` (n = 100000) ms"));
+    assert!(near.is_some() && large.is_some() && near < large, "{header}");
 }
