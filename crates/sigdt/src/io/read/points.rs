@@ -109,14 +109,14 @@ fn plain<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result<Vec<Poin
     while let Some(line) = lines.next_content()? {
         let point = match xy(line) {
             Ok(p) => Ok(Some(p)),
-            Err(_) if first && foreign_format(line).is_some() => {
-                let format = foreign_format(line).unwrap_or_default();
-                Err(format!(
+            Err(message) if first => match foreign_format(line) {
+                Some(format) => Err(format!(
                     "this is {format}, not a point file: write one point per line ('x y' or \
                      'x,y')"
-                ))
-            }
-            Err(_) if first && is_header(line) => Ok(None),
+                )),
+                None if is_header(line) => Ok(None),
+                None => Err(message),
+            },
             Err(message) => Err(message),
         };
         first = false;
