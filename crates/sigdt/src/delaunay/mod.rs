@@ -126,6 +126,16 @@ impl Triangulation {
         self.input_index[v as usize] as usize
     }
 
+    /// The inverse of [`input_index`](Self::input_index): the vertex of every input index,
+    /// `u32::MAX` for a duplicate that is not its copies' representative.
+    pub(crate) fn vertex_of_inputs(&self) -> Vec<u32> {
+        let mut vertex_of = vec![u32::MAX; self.input_len()];
+        for v in 0..self.num_vertices() as u32 {
+            vertex_of[self.input_index(v)] = v;
+        }
+        vertex_of
+    }
+
     /// `[duplicate, representative]` for every input point equal to a lower-index point,
     /// sorted.
     pub fn duplicates(&self) -> &[Edge] {

@@ -39,7 +39,7 @@ pub(crate) fn closed_component(
         // One component holding every point: its triangulation is `dt` itself, so its loop
         // edges are edges of `dt` and need no check.
         let rec = inflate_and_sculpt(dt, graph, 0);
-        let vertex_of = vertex_numbers(dt);
+        let vertex_of = dt.vertex_of_inputs();
         return from_loops(dt, &rec, |i| vertex_of[i], false, join_ratio);
     }
     let points: Vec<_> = vertices.iter().map(|&v| dt.point(v)).collect();
@@ -67,15 +67,6 @@ pub(crate) fn closed_component(
     }
     let rec = inflate_and_sculpt(&sub, &mask, 0);
     from_loops(dt, &rec, |i| vertices[i], true, join_ratio)
-}
-
-/// Every input index's vertex of `dt` (duplicates map to their representative's).
-fn vertex_numbers(dt: &Triangulation) -> Vec<u32> {
-    let mut vertex_of = vec![u32::MAX; dt.input_len()];
-    for v in 0..dt.num_vertices() as u32 {
-        vertex_of[dt.input_index(v)] = v;
-    }
-    vertex_of
 }
 
 /// The loops of `rec` (indices mapped to vertices of `dt` by `vertex`), each cut open at

@@ -236,6 +236,7 @@ fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read
     let mut pairs: Vec<[u32; 2]> = Vec::new();
     let mut inside: Vec<u32> = Vec::new();
     let mut chains = Chains::new(dt, join_ratio);
+    let mut scratch = Scratch(Reading::new(dt, &[]));
     for (vertices, branched) in forests.components() {
         if !branched {
             let path = tree.walk(&vertices);
@@ -252,10 +253,10 @@ fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read
         // included): the component's own spanning tree, read as a path, replaces them when
         // it does not zigzag (an open curve whose samples come closer across a bend than
         // along it). Loops with an edge beyond the join bound give way to the SIGDT pieces.
-        let zigzags = |pairs: &[[u32; 2]]| Reading::new(dt, pairs).zigzags(MAX_SAMPLED_TURN.cos());
         let mut paths = None;
-        if steps.zigzag_paths && zigzags(&closed.edges) {
-            paths = tree.pieces_as_paths(dt, &vertices).filter(|p| !zigzags(&path_pairs(p)));
+        if steps.zigzag_paths && scratch.zigzags(&closed.edges) {
+            paths =
+                tree.pieces_as_paths(dt, &vertices).filter(|p| !scratch.zigzags(&path_pairs(p)));
         }
         if paths.is_none() && !closed.edges.iter().all(within) {
             paths = sigdt.pieces_as_paths(dt, &vertices);
@@ -273,6 +274,20 @@ fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read
     Read { pairs, inside, stats }
 }
 
+/// One empty reading of the whole triangulation, to test a component's edges for zigzags
+/// in time proportional to the component, not to all the points.
+struct Scratch<'a>(Reading<'a>);
+
+impl Scratch<'_> {
+    /// Whether the edges `pairs` zigzag (the test of the `noisy` status).
+    fn zigzags(&mut self, pairs: &[[u32; 2]]) -> bool {
+        self.0.link(pairs);
+        let zigzags = self.0.zigzags_at(pairs.iter().flatten().copied(), MAX_SAMPLED_TURN.cos());
+        pairs.iter().flatten().for_each(|&v| self.0.detach(v));
+        zigzags
+    }
+}
+
 /// The edges of `paths`.
 fn path_pairs(paths: &[Vec<u32>]) -> Vec<[u32; 2]> {
     paths.iter().flat_map(|path| path.windows(2).map(|w| [w[0], w[1]])).collect()
@@ -282,10 +297,7 @@ fn path_pairs(paths: &[Vec<u32>]) -> Vec<[u32; 2]> {
 /// component.
 fn fallback(dt: &Triangulation) -> Read {
     let rec = sig_connect2d_on(dt, true);
-    let mut vertex_of = vec![u32::MAX; dt.input_len()];
-    for v in 0..dt.num_vertices() as u32 {
-        vertex_of[dt.input_index(v)] = v;
-    }
+    let vertex_of = dt.vertex_of_inputs();
     let to_vertex = |i: usize| vertex_of[i];
     let inside = rec.left_out.iter().map(|l| to_vertex(l.index)).collect();
     let pairs = rec.edges.iter().map(|&[i, j]| [to_vertex(i), to_vertex(j)]).collect();

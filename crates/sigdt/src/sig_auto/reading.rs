@@ -17,16 +17,21 @@ pub(crate) struct Reading<'a> {
 impl<'a> Reading<'a> {
     /// The reading of `pairs` (vertex pairs of `dt`, every vertex in at most two, no repeats).
     pub(crate) fn new(dt: &'a Triangulation, pairs: &[[u32; 2]]) -> Reading<'a> {
-        let mut neighbours = vec![[NONE; 2]; dt.num_vertices()];
+        let mut reading = Reading { dt, neighbours: vec![[NONE; 2]; dt.num_vertices()] };
+        reading.link(pairs);
+        reading
+    }
+
+    /// Adds the edges `pairs`; every vertex keeps at most two.
+    pub(crate) fn link(&mut self, pairs: &[[u32; 2]]) {
         for &[a, b] in pairs {
             for (x, y) in [(a, b), (b, a)] {
-                let slots = &mut neighbours[x as usize];
+                let slots = &mut self.neighbours[x as usize];
                 let free = usize::from(slots[0] != NONE);
                 debug_assert!(slots[free] == NONE, "vertex {x} on three reading edges");
                 slots[free] = y;
             }
         }
-        Reading { dt, neighbours }
     }
 
     /// The edges, each once as `[a, b]` with `a < b`, by vertex.
@@ -136,12 +141,21 @@ impl<'a> Reading<'a> {
     /// at every sample (ε < 1 gives 60°); a corner makes one or two such turns in a row, in
     /// one direction or in two, but never three changes of direction.
     pub(crate) fn zigzags(&self, cos_limit: f64) -> bool {
+        self.zigzags_at(0..self.neighbours.len() as u32, cos_limit)
+    }
+
+    /// [`zigzags`](Self::zigzags), looking only at zigzags centred on `vertices`.
+    pub(crate) fn zigzags_at(
+        &self,
+        vertices: impl IntoIterator<Item = u32>,
+        cos_limit: f64,
+    ) -> bool {
         let side = |v: u32| {
             let [x, y] = self.neighbours(v);
             orient2d(self.point(x), self.point(v), self.point(y)).signum()
         };
         let sharp = |v: u32| self.degree(v) == 2 && self.turns_more_than(v, cos_limit);
-        (0..self.neighbours.len() as u32).any(|b| {
+        vertices.into_iter().any(|b| {
             let [a, c] = self.neighbours(b);
             if !(sharp(b) && sharp(a) && sharp(c)) {
                 return false;

@@ -69,10 +69,7 @@ pub(crate) fn prefer_shorter_reading(reading: &mut Reading<'_>) {
     if polygon.status != Status::Polygon {
         return;
     }
-    let mut vertex_of = vec![u32::MAX; dt.input_len()];
-    for v in vertices {
-        vertex_of[dt.input_index(v)] = v;
-    }
+    let vertex_of = dt.vertex_of_inputs();
     let pairs: Vec<[u32; 2]> =
         polygon.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
     let other = Reading::new(dt, &pairs);
