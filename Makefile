@@ -80,7 +80,8 @@ doc:
 
 ## bench: the speed tables (make bench SIZES=1e5,1e6,1e7 for the large sizes): Delaunay,
 ## total, CGAL (when libcgal-dev is installed), memory per point, one thread against two;
-## then the whole `sigdt reconstruct` process against CGAL's.
+## then the whole `sigdt reconstruct` process against CGAL's; then the slow baselines (FITCONNECT,
+## STRETCHDENOISE, DISCUR, OPTIMALTRANSPORT) against SIG-CONNECT2D from 10^3 to 10^5 points.
 SIZES ?= 1e3,1e4,1e5,1e6
 CGAL_TOOL := $(TARGET_DIR)/cgal-delaunay
 bench: build
@@ -88,6 +89,8 @@ bench: build
 	else echo "libcgal-dev is not installed: no CGAL column (apt-get install -y --no-install-recommends libcgal-dev)"; fi
 	$(CARGO) run --release --locked -p sigdt --example speed -- --sizes $(SIZES) \
 	  --cgal $(CGAL_TOOL) --cli $(SIGDT)
+	$(CARGO) run --release --locked -p sigdt --example methods -- --sizes 1e3,1e4,1e5 \
+	  --methods sig-connect2d,fit-connect,stretch-denoise,discur,optimal-transport --limit 30
 
 ## cgal-delaunay: the bench-only CGAL baseline (GPL-3, tools/cgal-delaunay/; needs libcgal-dev).
 cgal-delaunay: $(CGAL_TOOL)

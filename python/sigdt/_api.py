@@ -95,8 +95,10 @@ def reconstruct(
     -----
     SigdtWarning
         The status says the result is not a faithful curve: ``"sculpting-stuck"`` (points
-        left inside), ``"network"`` (edges meet at junctions) or ``"noisy"`` (the edges
-        zigzag). The result is returned all the same.
+        left inside), ``"network"`` (edges meet at junctions), ``"noisy"`` (the edges
+        zigzag), ``"crossing"`` (edges cross) or ``"unfinished"`` (a limit stopped the
+        run). The result is returned all
+        the same.
 
     Examples
     --------

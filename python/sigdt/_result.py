@@ -21,6 +21,8 @@ STATUSES = (
     "curves",
     "network",
     "noisy",
+    "crossing",
+    "unfinished",
     "collinear",
     "too-few-points",
 )
@@ -60,7 +62,10 @@ class Reconstruction:
         ``"polygon"``, ``"polygons"``, ``"sculpting-stuck"``, ``"curves"`` (loops and open
         paths, not every point on a loop), ``"network"`` (some point has 3 or more edges),
         ``"noisy"`` (``"sig-auto"``: the edges zigzag, the points are too noisy or sparse
-        for a curve through them), ``"collinear"`` or ``"too-few-points"``.
+        for a curve through them), ``"crossing"`` (``"fit-connect"``,
+        ``"stretch-denoise"``: some edges cross), ``"unfinished"`` (``"fit-connect"``,
+        ``"stretch-denoise"``: stopped at a pass or work limit, undecided points left out),
+        ``"collinear"`` or ``"too-few-points"``.
     vertices : numpy.ndarray
         The coordinates that ``edges``, ``loops`` and ``paths`` index, ``(k, 2)`` float64:
         ``points`` itself, unless the method moved the points (``"stretch-denoise"``) or
@@ -69,11 +74,12 @@ class Reconstruction:
         ``"input"``, ``"moved"`` or ``"new"``.
     left_out : numpy.ndarray
         int64 indices (sorted) of the distinct points the method left out on purpose: inside
-        the boundary when sculpting got stuck, or outliers (``"sig-auto"``); they get no
+        the boundary when sculpting got stuck, outliers (``"sig-auto"``), or points
+        ``"fit-connect"`` and ``"stretch-denoise"`` eliminated or could not fit; they get no
         edges.
     left_out_reasons : list of str
         Why each point of ``left_out`` was left out, in the same order: ``"inside"``,
-        ``"outlier"``, ``"eliminated"`` or ``"non-conforming"``.
+        ``"outlier"``, ``"eliminated"``, ``"non-conforming"`` or ``"unresolved"``.
     duplicates : numpy.ndarray
         ``(d, 2)`` int64 rows ``[duplicate, representative]``; duplicates get no edges.
     stats : dict

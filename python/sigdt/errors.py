@@ -35,4 +35,5 @@ class InternalError(SigdtError, RuntimeError):
 
 class SigdtWarning(UserWarning):
     """The result is not a faithful curve: the status is ``"sculpting-stuck"``,
-    ``"network"`` or ``"noisy"`` (see :attr:`sigdt.Reconstruction.status`)."""
+    ``"network"``, ``"noisy"``, ``"crossing"`` or ``"unfinished"`` (see
+    :attr:`sigdt.Reconstruction.status`)."""

@@ -446,6 +446,8 @@ def test_methods_and_graph_kinds():
         "hnn-crust",
         "crawl",
         "discur",
+        "fit-connect",
+        "stretch-denoise",
         "peel",
         "emst",
         "optimal-transport",
@@ -458,9 +460,29 @@ def test_methods_and_graph_kinds():
         # points: one vertex, no edge.
         open_ = ("crawl", "emst", "optimal-transport")
         assert rec.status == ("curves" if method in open_ else "polygon"), method
-        kind = "new" if method == "optimal-transport" else "input"
+        kinds = {"optimal-transport": "new", "stretch-denoise": "moved"}
+        kind = kinds.get(method, "input")
         assert rec.vertices_kind == kind, method
         assert (rec.vertices is rec.points) == (kind == "input"), method
+
+
+def test_fit_connect_thins_noise_and_stretch_denoise_moves_points_within_it():
+    # A noisy circle: FITCONNECT links most points and eliminates some between linked
+    # ones; STRETCHDENOISE has the same edges and moves the curve points closer to the
+    # circle, each at most its noise extent.
+    rng = np.random.default_rng(7)
+    t = np.linspace(0, 2 * np.pi, 120, endpoint=False)
+    radius = 1 + rng.uniform(-0.01, 0.01, len(t))
+    noisy = np.c_[radius * np.cos(t), radius * np.sin(t)]
+    fit = sigdt.reconstruct(noisy, method="fit-connect")
+    stretch = sigdt.reconstruct(noisy, method="stretch-denoise")
+    assert fit.vertices_kind == "input" and stretch.vertices_kind == "moved"
+    assert np.array_equal(fit.edges, stretch.edges) and len(fit.edges) > 60
+    assert set(fit.left_out_reasons) <= {"eliminated", "non-conforming"}
+    on_curve = np.unique(fit.edges)
+    error = lambda p: np.abs(np.hypot(*p[on_curve].T) - 1).mean()
+    assert error(stretch.vertices) < error(noisy)
+    assert np.abs(stretch.vertices - noisy).max() < 0.05
 
 
 def test_optimal_transport_draws_on_its_own_vertices():

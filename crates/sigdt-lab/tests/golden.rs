@@ -59,6 +59,7 @@ const FLOORS_FILTERS: &[(Method, [usize; 7])] = &[
     (Method::HnnCrust, [103, 81, 34, 53, 26, 35, 11]),
     (Method::Crawl, [99, 80, 39, 24, 26, 35, 13]),
     (Method::Discur, [83, 70, 35, 44, 27, 33, 7]),
+    (Method::FitConnect, [89, 75, 33, 24, 24, 34, 16]),
     (Method::Peel, [104, 82, 33, 51, 26, 35, 10]),
     (Method::Emst, [0, 0, 0, 54, 0, 0, 0]),
 ];
@@ -246,6 +247,16 @@ fn golden_curves_graph_filters() {
         }
         curves(method.name(), &floors);
     }
+}
+
+/// STRETCHDENOISE has FITCONNECT's edges (it only moves the points), so the same exact
+/// cases.
+#[test]
+fn golden_curves_stretch_denoise() {
+    let floors = FLOORS_FILTERS.iter().find(|(m, _)| *m == Method::FitConnect).unwrap().1;
+    let categories =
+        ["manifold", "manifold eps<1", "sharp", "open", "multiple", "noisy", "outliers"];
+    curves(Method::StretchDenoise.name(), &categories.into_iter().zip(floors).collect::<Vec<_>>());
 }
 
 /// OPTIMALTRANSPORT places vertices of its own, so it reconstructs no case exactly

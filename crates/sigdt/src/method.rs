@@ -47,6 +47,15 @@ pub enum Method {
     /// first; a curve takes a longer edge only if it fits the curve's spacing statistics.
     /// Reconstructed without the paper's text (`docs/algorithms.md` §3.9).
     Discur,
+    /// FITCONNECT (Ohrhallinger, Wimmer 2018): grow a fitted circle around each point until
+    /// the point lies between its neighbours, and link points whose fits overlap. Thins
+    /// noise by leaving points out ([`LeftOutReason::Eliminated`](crate::LeftOutReason)).
+    /// Ignores `leaf_elimination`.
+    FitConnect,
+    /// STRETCHDENOISE (Ohrhallinger, Wimmer 2018): FITCONNECT's edges, with every curve
+    /// point moved along its fitted normal, within its noise extent, to straighten the
+    /// curve ([`Vertices::Moved`](crate::Vertices::Moved)). Ignores `leaf_elimination`.
+    StretchDenoise,
     /// PEEL (Parakkat, Methirumangalath, Muthuganapathy 2018): drop every triangle's longest
     /// edge, then filter.
     Peel,
@@ -71,6 +80,8 @@ impl Method {
         Method::HnnCrust,
         Method::Crawl,
         Method::Discur,
+        Method::FitConnect,
+        Method::StretchDenoise,
         Method::Peel,
         Method::Emst,
         Method::OptimalTransport,
@@ -87,6 +98,8 @@ impl Method {
             Method::HnnCrust => "hnn-crust",
             Method::Crawl => "crawl",
             Method::Discur => "discur",
+            Method::FitConnect => "fit-connect",
+            Method::StretchDenoise => "stretch-denoise",
             Method::Peel => "peel",
             Method::Emst => "emst",
             Method::OptimalTransport => "optimal-transport",
@@ -150,6 +163,8 @@ pub fn reconstruct_on(dt: &Triangulation, options: &Options) -> Reconstruction {
         Method::SigAuto => return sig_auto::sig_auto_on(dt),
         Method::Connect2d => return baselines::connect2d::connect2d_on(dt),
         Method::OptimalTransport => return baselines::optimal_transport::optimal_transport_on(dt),
+        Method::FitConnect => return baselines::fit_connect::fit_connect_on(dt),
+        Method::StretchDenoise => return baselines::stretch_denoise::stretch_denoise_on(dt),
         Method::Crust => baselines::crust::crust,
         Method::NnCrust => baselines::nn_crust::nn_crust,
         Method::HnnCrust => baselines::hnn_crust::hnn_crust,

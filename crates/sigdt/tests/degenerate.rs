@@ -203,10 +203,15 @@ fn three_points_give_the_triangle() {
     // closes the legs' path: the hypotenuse is less than twice the longest leg. DISCUR
     // closes it too: for a curve of two unit edges the criterion takes up to about 2.05.
     // OPTIMALTRANSPORT keeps ceil(3 / 4) = 1 vertex, which holds every sample: no edge.
+    // FITCONNECT (and STRETCHDENOISE): only the right-angle corner lies between its two
+    // neighbours, the other two never conform, so nothing links and all three are left out
+    // (the authors' program gives no edge either).
     let points = [[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]];
     for (method, rec) in run_all("three points", &points) {
         if is_connect(method) || matches!(method, Method::SigAuto | Method::Discur) {
             assert_eq!((&rec.status, &rec.loops), (&Status::Polygon, &vec![vec![0, 2, 1]]));
+        } else if matches!(method, Method::FitConnect | Method::StretchDenoise) {
+            assert_eq!((&rec.status, rec.edges.len(), rec.left_out.len()), (&Status::Curves, 0, 3));
         } else if method == Method::OptimalTransport {
             assert_eq!((&rec.status, rec.edges.len()), (&Status::Curves, 0));
             assert!(matches!(&rec.vertices, Vertices::New(v) if v.len() == 1), "{rec:?}");

@@ -84,24 +84,30 @@ pub enum LeftOutReason {
     Eliminated,
     /// FITCONNECT's fitted neighbourhood of the point never conformed.
     NonConforming,
+    /// FITCONNECT stopped at a pass or work limit before deciding the point
+    /// ([`Status::Unfinished`]).
+    Unresolved,
 }
 
 impl LeftOutReason {
     /// Every reason, in the order of their names' listing.
-    pub const ALL: [LeftOutReason; 4] = [
+    pub const ALL: [LeftOutReason; 5] = [
         LeftOutReason::Inside,
         LeftOutReason::Outlier,
         LeftOutReason::Eliminated,
         LeftOutReason::NonConforming,
+        LeftOutReason::Unresolved,
     ];
 
-    /// The kebab-case name: `inside`, `outlier`, `eliminated` or `non-conforming`.
+    /// The kebab-case name: `inside`, `outlier`, `eliminated`, `non-conforming` or
+    /// `unresolved`.
     pub fn name(self) -> &'static str {
         match self {
             LeftOutReason::Inside => "inside",
             LeftOutReason::Outlier => "outlier",
             LeftOutReason::Eliminated => "eliminated",
             LeftOutReason::NonConforming => "non-conforming",
+            LeftOutReason::Unresolved => "unresolved",
         }
     }
 }
@@ -152,6 +158,15 @@ pub enum Status {
     /// the points are too noisy, or too sparse, for a curve through them there. The loops
     /// and paths are the method's best reading all the same. (SIG-AUTO.)
     Noisy,
+    /// Some edges cross: FITCONNECT links points whose fitted neighbourhoods overlap, which
+    /// does not rule out crossings (the authors' program gives them too), and
+    /// STRETCHDENOISE's moves can make them. The loops and paths are read from the edges
+    /// all the same.
+    Crossing,
+    /// FITCONNECT stopped at a pass or work limit with points still undecided; they are
+    /// left out as [`Unresolved`](LeftOutReason::Unresolved) and the edges are those decided
+    /// so far (they may cross: see [`Crossing`](Status::Crossing)).
+    Unfinished,
     /// All distinct points lie on one line: the result is the path through them in their
     /// order along the line.
     Collinear,
@@ -169,11 +184,18 @@ impl Status {
     /// True when the status says the result is not a faithful reading of curves: sculpting
     /// got stuck, edges meet at junctions, or they zigzag. Front ends warn then.
     pub fn is_warning(&self) -> bool {
-        matches!(self, Status::SculptingStuck { .. } | Status::Network | Status::Noisy)
+        matches!(
+            self,
+            Status::SculptingStuck { .. }
+                | Status::Network
+                | Status::Noisy
+                | Status::Crossing
+                | Status::Unfinished
+        )
     }
 
     /// A short kebab-case name: `polygon`, `polygons`, `sculpting-stuck`, `curves`,
-    /// `network`, `noisy`, `collinear`, `too-few-points`.
+    /// `network`, `noisy`, `crossing`, `unfinished`, `collinear`, `too-few-points`.
     pub fn name(&self) -> &'static str {
         match self {
             Status::Polygon => "polygon",
@@ -182,6 +204,8 @@ impl Status {
             Status::Curves => "curves",
             Status::Network => "network",
             Status::Noisy => "noisy",
+            Status::Crossing => "crossing",
+            Status::Unfinished => "unfinished",
             Status::Collinear => "collinear",
             Status::TooFewPoints => "too-few-points",
         }
@@ -203,6 +227,10 @@ impl std::fmt::Display for Status {
             Status::Curves => f.write_str("loops and open paths, not all points on loops"),
             Status::Network => f.write_str("edges meet at junctions (a point with 3+ edges)"),
             Status::Noisy => f.write_str("the edges zigzag: the points are too noisy or sparse"),
+            Status::Crossing => f.write_str("some edges cross"),
+            Status::Unfinished => {
+                f.write_str("stopped at the pass limit: undecided points are left out")
+            }
             Status::Collinear => f.write_str("all points are collinear: one open path"),
             Status::TooFewPoints => f.write_str("fewer than three distinct points"),
         }

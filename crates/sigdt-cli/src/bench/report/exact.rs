@@ -37,7 +37,7 @@ pub(super) fn paper_name(method: &str) -> Option<&'static str> {
         "crawl" => "CRAWL",
         "discur" => "DISCUR",
         "peel" => "PEEL",
-        "fitconnect" => "FITCONNECT",
+        "fit-connect" => "FITCONNECT",
         "stretch-denoise" => "STRETCHDENOISE",
         "optimal-transport" => "OPTIMALTRANSPORT",
         _ => return None,
