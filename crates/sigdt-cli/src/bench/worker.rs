@@ -84,7 +84,13 @@ pub fn measure(
         }
     }
     times.sort_by(f64::total_cmp);
-    score(&pts, clean.as_deref(), &gt, &rec.edges, rec.status.name(), times[times.len() / 2])
+    // The result's edges index its vertices: the input points, the points it moved
+    // (STRETCHDENOISE) or vertices it placed (OPTIMALTRANSPORT, which are not the input's).
+    let indexed_like_input = !matches!(rec.vertices, sigdt::Vertices::New(_));
+    let truth = clean.as_deref().unwrap_or(&pts);
+    let time = times[times.len() / 2];
+    let vertices = rec.vertex_positions(&pts);
+    score(vertices, indexed_like_input, truth, &gt, &rec.edges, rec.status.name(), time)
         .context("scoring the result")
 }
 
@@ -103,6 +109,15 @@ fn read_case(points: &Path, gt: &Path, truth: Option<&Path>) -> Result<CaseData>
     let pts = sigdt::io::read_points(points)?;
     let gt = sigdt::io::read_edges_of(gt, pts.len())?;
     let clean = truth.map(sigdt::io::read_points).transpose()?;
+    if let Some(clean) = &clean {
+        if clean.len() != pts.len() {
+            anyhow::bail!(
+                "the clean positions have {} points, the case has {}",
+                clean.len(),
+                pts.len()
+            );
+        }
+    }
     Ok((pts, gt, clean))
 }
 
@@ -113,39 +128,33 @@ pub fn score_file(points: &Path, gt: &Path, truth: Option<&Path>, edges: &Path) 
     let mut result = sigdt::io::read_edges_of(edges, pts.len())?;
     result.sort_unstable();
     result.dedup();
-    score(&pts, clean.as_deref(), &gt, &result, "imported", f64::NAN).context("scoring the result")
+    let truth = clean.as_deref().unwrap_or(&pts);
+    score(&pts, true, truth, &gt, &result, "imported", f64::NAN).context("scoring the result")
 }
 
-/// Scores `edges` (a result on `points`) against `gt`; distances and areas are measured
-/// against the ground truth on `clean` positions when given.
+/// Scores `edges`, a result between `vertices`, against `gt` between `truth` (the clean
+/// positions when given, else the input points). `indexed_like_input`: vertex `i` of the
+/// result is input point `i` (possibly moved), so the edges can be exact; false for a method
+/// that places vertices of its own. Distances and areas are measured between the result's
+/// vertices and the truth's positions.
 pub fn score(
-    points: &[Point],
-    clean: Option<&[Point]>,
+    vertices: &[Point],
+    indexed_like_input: bool,
+    truth: &[Point],
     gt: &[Edge],
     edges: &[Edge],
     status: &str,
     time_ms: f64,
 ) -> Result<Run> {
     let diff = sigdt_lab::eval::edge_diff(edges, gt);
-    // Against clean positions: one point array, the clean copies after the given ones.
-    let (all, truth_edges): (std::borrow::Cow<'_, [Point]>, Vec<Edge>) = match clean {
-        None => (points.into(), gt.to_vec()),
-        Some(clean) => {
-            if clean.len() != points.len() {
-                anyhow::bail!(
-                    "the clean positions have {} points, the case has {}",
-                    clean.len(),
-                    points.len()
-                );
-            }
-            let n = points.len();
-            ([points, clean].concat().into(), gt.iter().map(|&[i, j]| [i + n, j + n]).collect())
-        }
-    };
+    // One point array: the result's vertices, then the truth's positions.
+    let r = vertices.len();
+    let all = [vertices, truth].concat();
+    let truth_edges: Vec<Edge> = gt.iter().map(|&[i, j]| [i + r, j + r]).collect();
     let distances = sigdt_lab::eval::distance_errors(&all, edges, &truth_edges)?;
     let area = sigdt_lab::eval::area_difference(&all, edges, &truth_edges)?;
     Ok(Run {
-        exact: diff.missing.is_empty() && diff.extra.is_empty(),
+        exact: indexed_like_input && diff.missing.is_empty() && diff.extra.is_empty(),
         status: status.to_string(),
         edges: edges.len(),
         missing: diff.missing.len(),
@@ -160,6 +169,22 @@ pub fn score(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn results_are_measured_on_their_own_vertices() {
+        // The unit square as truth; the result's edges are the same indices on vertices
+        // moved 0.1 outward in x. Measured on its own vertices, the result is 0.1 off; as
+        // vertices of its own, it is not exact even though its indices match.
+        let truth = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let moved = [[-0.1, 0.0], [1.1, 0.0], [1.1, 1.0], [-0.1, 1.0]];
+        let square = [[0, 1], [0, 3], [1, 2], [2, 3]];
+        let same = score(&truth, true, &truth, &square, &square, "polygon", 1.0).unwrap();
+        assert!(same.exact && same.rmse == Some(0.0));
+        let off = score(&moved, true, &truth, &square, &square, "polygon", 1.0).unwrap();
+        assert!(off.exact && off.rmse.unwrap() > 0.01 && off.symdiff.unwrap() > 0.1);
+        let own = score(&moved, false, &truth, &square, &square, "curves", 1.0).unwrap();
+        assert!(!own.exact && own.rmse == off.rmse);
+    }
 
     #[test]
     fn line_round_trips() {

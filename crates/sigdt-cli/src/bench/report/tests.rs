@@ -148,6 +148,8 @@ fn header_paper_table_and_other_sections() {
     assert!(row(&md, "| CRUST |").ends_with("| `crust` |"));
     assert!(row(&md, "| LENZ |").ends_with("| 12672 |  |"));
     assert!(row(&md, "| FITCONNECT |").contains("| 237.1 | – |"));
+    assert!(md.contains("Paper convention: the paper truncates its percentages"));
+    assert!(md.contains("- LENZ: nothing of its rules is known\n"));
     assert_eq!(
         md.lines()
             .filter(|l| l.contains(" % | ")
