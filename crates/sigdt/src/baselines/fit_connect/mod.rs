@@ -5,15 +5,15 @@
 //! \[OW18\] S. Ohrhallinger, M. Wimmer, *FitConnect: Connecting Noisy 2D Samples by Fitted
 //! Neighborhoods*, Computer Graphics Forum 38(1), 2019 (Eurographics 2018 short-paper
 //! track). The rules below are those of the authors' program (github stefango74/fitconnect
-//! @0dde252, GPL-3), read to learn its behaviour and restated in our own words in
-//! `../shared/BASELINES.md` §2.1 and `docs/algorithms.md` §3.11; no code was taken.
+//! @0dde252, GPL-3), read to learn its behaviour and restated in our own words (here and
+//! in `docs/algorithms.md` §3.11); no code was taken.
 //!
 //! # Steps
 //! Every point has a state (initial, conforming, non-conforming, manifold, leaf, sharp,
 //! eliminated), a growing list `K(p)` of its nearest neighbours, the circle fitted to
 //! `p ∪ K(p)` (`fit.rs`) with the neighbours ordered on its two *sides*, and two link slots,
 //! one per side. Passes run over the *unhandled* points (initial, conforming,
-//! non-conforming) in index order until none is left (`visit.rs`):
+//! non-conforming) in input order until none is left (`visit.rs`):
 //! 1. each visit adds the next nearest neighbour (two on the first visit) and refits; the
 //!    point *conforms* when it lies between its outermost neighbours along the fit;
 //! 2. a conforming point links to its *overlap* on each side: the outermost neighbour that
@@ -31,14 +31,15 @@
 //! paths, every point with at most two edges.
 //!
 //! # Left out
-//! Eliminated points are [`Eliminated`](crate::LeftOutReason::Eliminated); points that
-//! never reached a link are [`NonConforming`](crate::LeftOutReason::NonConforming); points
+//! Eliminated points are [`Eliminated`](crate::LeftOutReason::Eliminated): on clean,
+//! sparse input FITCONNECT is often not exact for this reason, as it thins clean samples as
+//! it thins noise. Points that never reached a link are
+//! [`NonConforming`](crate::LeftOutReason::NonConforming); points
 //! still undecided when a limit (passes or work, see "Complexity") stops the run are
 //! [`Unresolved`](crate::LeftOutReason::Unresolved) and the status is
 //! [`Unfinished`](crate::Status::Unfinished). Links can cross (the rules do not test for
 //! it; the authors' program gives crossings on 4 of `data/curves`): the status is then
-//! [`Crossing`](crate::Status::Crossing). On clean, sparse input FITCONNECT is often not
-//! exact for this reason: it thins clean samples as it thins noise.
+//! [`Crossing`](crate::Status::Crossing).
 //!
 //! # Guarantee
 //! None for the connectivity; [OW18] argues for noisy samples of smooth curves. It needs no

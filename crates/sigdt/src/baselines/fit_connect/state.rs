@@ -106,8 +106,6 @@ pub(crate) struct Points<'a> {
     pub refs: Vec<Vec<u32>>,
     pub unhandled: BTreeSet<u32>,
     pub nearest: Nearest<'a>,
-    /// Fits computed, for the statistics.
-    pub fit_count: usize,
     /// Neighbours fitted, summed over the fits: the run's work.
     pub work: usize,
 }
@@ -133,7 +131,6 @@ impl<'a> Points<'a> {
             refs: vec![Vec::new(); n],
             unhandled: (0..n as u32).collect(),
             nearest: Nearest::new(dt),
-            fit_count: 0,
             work: 0,
         }
     }

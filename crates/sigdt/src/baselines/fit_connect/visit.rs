@@ -125,7 +125,6 @@ impl Points<'_> {
             self.nearest.forget(self.vertex[pi]);
         }
         let (fit, sides, conforms) = fit_and_order(&self.xy, p, &self.knn[pi], |r| r as usize);
-        self.fit_count += 1;
         self.work += self.knn[pi].len();
         self.fits[pi] = fit;
         self.sides[pi] = Sides::new(sides);
