@@ -4,12 +4,7 @@ use crate::internals::check_reconstruction;
 use crate::result::LeftOutReason;
 
 fn circle(n: usize, r: f64) -> Vec<Point> {
-    (0..n)
-        .map(|i| {
-            let a = i as f64 * std::f64::consts::TAU / n as f64;
-            [r * a.cos(), r * a.sin()]
-        })
-        .collect()
+    crate::samplers::regular_polygon(n, r).points
 }
 
 fn run(points: &[Point]) -> Reconstruction {
