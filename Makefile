@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint
+.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -104,27 +104,38 @@ bench-python: py-build build
 
 ## report: the side-by-side evaluation in docs/report/ (issue 4): every method and
 ## shapely.concave_hull on data/curves (or DATA=...) and on the real shapes of data/real
-## (docs/report/real/), then the noise, outlier, lfs-noise and eps sweeps. Takes about ten
-## minutes on 2 cores.
+## (docs/report/real/) and on the non-manifold drawings of data/non-manifold
+## (docs/report/non-manifold/), then the noise, outlier, lfs-noise and eps sweeps. Takes about
+## ten minutes on 2 cores.
 DATA ?= data/curves
 REAL := data/real
+NON_MANIFOLD := data/non-manifold
 REPORT := docs/report
 SWEEPS := $(TARGET_DIR)/sweeps
 report: build py-build
-	rm -rf $(TARGET_DIR)/concave-hull $(TARGET_DIR)/concave-hull-real $(SWEEPS)
+	rm -rf $(TARGET_DIR)/concave-hull $(TARGET_DIR)/concave-hull-real \
+	  $(TARGET_DIR)/concave-hull-non-manifold $(SWEEPS)
 	$(VPY) -m sigdt.baselines $(DATA) $(TARGET_DIR)/concave-hull
 	$(SIGDT) bench $(DATA) --out $(REPORT) --import concave-hull=$(TARGET_DIR)/concave-hull
 	$(VPY) -m sigdt.baselines $(REAL) $(TARGET_DIR)/concave-hull-real
 	$(SIGDT) bench $(REAL) --out $(REPORT)/real \
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-real
+	$(VPY) -m sigdt.baselines $(NON_MANIFOLD) $(TARGET_DIR)/concave-hull-non-manifold
+	$(SIGDT) bench $(NON_MANIFOLD) --out $(REPORT)/non-manifold \
+	  --import concave-hull=$(TARGET_DIR)/concave-hull-non-manifold
 	$(SIGDT) sweep noise $(DATA) --out $(SWEEPS)/noise --jobs 2
 	$(SIGDT) sweep outliers $(DATA) --out $(SWEEPS)/outliers --jobs 2
 	$(SIGDT) sweep lfs-noise data/svg/simple.svg --out $(SWEEPS)/lfs-noise --jobs 2
 	$(SIGDT) sweep eps data/svg/simple.svg --out $(SWEEPS)/eps --jobs 2
 	mkdir -p $(REPORT)/sweeps
 	for k in noise outliers lfs-noise eps; do \
-	  for f in sweep.csv rmse.svg exact.svg; do cp $(SWEEPS)/$$k/$$f $(REPORT)/sweeps/$$k-$$f; done; \
+	  for f in sweep.csv sets.csv rmse.svg exact.svg; do cp $(SWEEPS)/$$k/$$f $(REPORT)/sweeps/$$k-$$f; done; \
 	done
+
+## data-non-manifold: regenerates data/non-manifold, the seeded non-manifold drawings (a
+## test checks the folder against the generator).
+data-non-manifold:
+	cargo run --release -p sigdt-lab --example non_manifold_data -- $(NON_MANIFOLD)
 
 REAL_WINS := mp7_octopus16_lfs030_out03 pysal_10740_r167_k1 mp7_Bone20_lfs030_noise0.002 \
   mp7_spring11_lfs030

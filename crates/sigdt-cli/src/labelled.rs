@@ -20,6 +20,9 @@ pub struct Labelled {
     pub gt: Vec<Edge>,
     /// Clean positions, same indices, if `points` are noisy.
     pub truth: Option<Vec<Point>>,
+    /// The curve the points were sampled from, densely, when known: distances and areas are
+    /// then measured against it rather than against the ground-truth polygon.
+    pub curve: Option<Sample>,
 }
 
 /// Path `k` of `paths`, read from `file`.
@@ -52,17 +55,23 @@ pub fn eps_sample(
     let edges = clean.edges.clone();
     let truth = order(clean);
     Ok(match noisy {
-        None => Labelled { points: truth.points, gt: truth.edges, truth: None },
+        None => Labelled { points: truth.points, gt: truth.edges, truth: None, curve: None },
         Some(points) => {
             // The same seed gives the same permutation for the same length.
             let noisy = order(Sample { points, edges });
-            Labelled { points: noisy.points, gt: noisy.edges, truth: Some(truth.points) }
+            Labelled {
+                points: noisy.points,
+                gt: noisy.edges,
+                truth: Some(truth.points),
+                curve: None,
+            }
         }
     })
 }
 
-/// Writes `OUT.xy`, `OUT.gt` and, for noisy points, `OUT.truth.xy`, each atomically. All
-/// three are checked before any is written; none may be `source`, the file read.
+/// Writes `OUT.xy`, `OUT.gt`, for noisy points `OUT.truth.xy` and, with a known curve,
+/// `OUT.curve.xy` and `OUT.curve.gt`, each atomically. All are checked before any is
+/// written; none may be `source`, the file read.
 pub fn write_labelled(out: &Path, labelled: &Labelled, source: &Path) -> Result<()> {
     let with = |ext: &str| -> PathBuf {
         let stem = out.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
@@ -80,10 +89,22 @@ pub fn write_labelled(out: &Path, labelled: &Labelled, source: &Path) -> Result<
         Some(clean) => Some((Output::new(Some(&with("truth.xy")), source)?, clean)),
         None => None,
     };
+    let curve = match &labelled.curve {
+        Some(curve) => Some((
+            Output::new(Some(&with("curve.xy")), source)?,
+            Output::new(Some(&with("curve.gt")), source)?,
+            curve,
+        )),
+        None => None,
+    };
     points.write(|w| w.write_all(points_text(&labelled.points).as_bytes()))?;
     gt.write(|w| sigdt::io::write_edges(w, &labelled.gt))?;
     if let Some((output, truth)) = truth {
         output.write(|w| w.write_all(points_text(truth).as_bytes()))?;
+    }
+    if let Some((points, edges, curve)) = curve {
+        points.write(|w| w.write_all(points_text(&curve.points).as_bytes()))?;
+        edges.write(|w| sigdt::io::write_edges(w, &curve.edges))?;
     }
     Ok(())
 }

@@ -1,7 +1,9 @@
 //! Labelled folders in the layout of `data/curves` and `data/real`: `index.csv` with one row
 //! per case (`name,category,n_points,...,epsilon,...`), and beside it `NAME.xy` points with
 //! `NAME.gt` ground-truth edges. An optional `NAME.truth.xy` holds the clean positions of
-//! noisy points (same indices), to measure distances against the clean curve.
+//! noisy points (same indices), to measure distances against the clean curve; an optional
+//! `NAME.curve.xy` with `NAME.curve.gt` holds the curve the points were sampled from, densely
+//! (a polyline of its own points), to measure distances and areas against the curve itself.
 //!
 //! This is the one reader of such folders: the benchmark, the golden tests and the examples
 //! all go through it. `index.csv` is read as CSV: a UTF-8 byte-order mark is skipped, fields
@@ -34,6 +36,9 @@ pub struct CaseFiles {
     pub gt: PathBuf,
     /// `NAME.truth.xy`, when it exists.
     pub truth: Option<PathBuf>,
+    /// `NAME.curve.xy` and `NAME.curve.gt`, when the first exists (the second must then
+    /// exist too: reading it fails otherwise).
+    pub curve: Option<(PathBuf, PathBuf)>,
 }
 
 /// The cases of the folder `dir`, in `index.csv` order.
@@ -98,10 +103,12 @@ impl Case {
     /// The files of this case in `dir`.
     pub fn files(&self, dir: &Path) -> CaseFiles {
         let truth = dir.join(format!("{}.truth.xy", self.name));
+        let curve = dir.join(format!("{}.curve.xy", self.name));
         CaseFiles {
             points: dir.join(format!("{}.xy", self.name)),
             gt: dir.join(format!("{}.gt", self.name)),
             truth: truth.is_file().then_some(truth),
+            curve: curve.is_file().then(|| (curve, dir.join(format!("{}.curve.gt", self.name)))),
         }
     }
 

@@ -25,9 +25,8 @@ pub fn select(dir: &Path, categories: &[String], names: Option<&str>) -> Result<
         rows.into_iter().filter(wanted).map(|row| Case { row, graph_epsilon: None }).collect();
     for case in &cases {
         let files = case.row.files(dir);
-        for path in
-            [Some(&files.points), Some(&files.gt), files.truth.as_ref()].into_iter().flatten()
-        {
+        let curve = files.curve.iter().flat_map(|(points, edges)| [points, edges]);
+        for path in [&files.points, &files.gt].into_iter().chain(&files.truth).chain(curve) {
             // Parts of a run read case files in-process, outside the workers' time limit: a
             // named pipe there would block it forever. A missing file fails its case only.
             if path.exists() && !path.is_file() {

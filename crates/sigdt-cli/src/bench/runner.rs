@@ -85,8 +85,8 @@ fn run_one(exe: &Path, plan: &Plan<'_>, case: &dataset::Case, method: &str) -> O
     }
 }
 
-/// Starts `sigdt bench-worker ARGS POINTS GT [--truth TRUTH]` on a case's files, its output
-/// piped.
+/// Starts `sigdt bench-worker ARGS POINTS GT [--truth TRUTH] [--curve XY --curve-gt GT]` on a
+/// case's files, its output piped.
 fn spawn_worker<A: AsRef<OsStr>>(
     exe: &Path,
     files: &dataset::CaseFiles,
@@ -96,6 +96,9 @@ fn spawn_worker<A: AsRef<OsStr>>(
     command.arg("bench-worker").args(args).arg(&files.points).arg(&files.gt);
     if let Some(truth) = &files.truth {
         command.arg("--truth").arg(truth);
+    }
+    if let Some((points, edges)) = &files.curve {
+        command.arg("--curve").arg(points).arg("--curve-gt").arg(edges);
     }
     command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn()
 }

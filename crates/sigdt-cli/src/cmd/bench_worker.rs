@@ -8,6 +8,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use clap::Args;
 use sigdt::{Method, Options};
+use sigdt_lab::dataset::CaseFiles;
 
 use crate::bench::worker;
 
@@ -21,6 +22,12 @@ pub struct WorkerArgs {
     /// Clean positions of the points, to measure distances against.
     #[arg(long)]
     pub truth: Option<PathBuf>,
+    /// The points of the curve the case was sampled from, to measure distances against.
+    #[arg(long, requires = "curve_gt")]
+    pub curve: Option<PathBuf>,
+    /// The edges of that curve.
+    #[arg(long, requires = "curve")]
+    pub curve_gt: Option<PathBuf>,
     /// Method.
     #[arg(long, value_parser = crate::methods::parser(),
           required_unless_present_any = ["score", "epsilon"])]
@@ -38,16 +45,21 @@ pub struct WorkerArgs {
 
 /// `sigdt bench-worker`: prints one result line.
 pub fn run(args: &WorkerArgs) -> Result<()> {
-    let (points, gt, truth) = (&args.points, &args.gt, args.truth.as_deref());
     if args.epsilon {
-        println!("graph_epsilon={:e}", worker::graph_epsilon(points, gt)?);
+        println!("graph_epsilon={:e}", worker::graph_epsilon(&args.points, &args.gt)?);
         return Ok(());
     }
+    let files = CaseFiles {
+        points: args.points.clone(),
+        gt: args.gt.clone(),
+        truth: args.truth.clone(),
+        curve: args.curve.clone().zip(args.curve_gt.clone()),
+    };
     let run = match (&args.score, args.method) {
-        (Some(edges), _) => worker::score_file(points, gt, truth, edges)?,
+        (Some(edges), _) => worker::score_file(&files, edges)?,
         (None, Some(method)) => {
             let options = Options { method, ..Options::default() };
-            worker::measure(points, gt, truth, &options, args.repeat)?
+            worker::measure(&files, &options, args.repeat)?
         }
         (None, None) => anyhow::bail!("bench-worker needs --method or --score"),
     };

@@ -1,5 +1,7 @@
 //! `sigdt sample`: an eps-sample of a cubic Bézier path of an SVG file, with its ground
-//! truth (and clean positions when lfs noise is added).
+//! truth (and clean positions when lfs noise is added); or, with `--junctions`, a sample of
+//! the whole drawing whose curves cross or end on one another, every junction one shared
+//! point of the ground truth.
 
 use std::path::PathBuf;
 
@@ -7,7 +9,7 @@ use anyhow::Result;
 use clap::Args;
 use sigdt_lab::curves;
 
-use crate::labelled::{eps_sample, pick, write_labelled};
+use crate::labelled::{eps_sample, pick, write_labelled, Labelled};
 
 /// `sigdt sample`.
 #[derive(Debug, Args)]
@@ -16,8 +18,17 @@ pub struct SampleArgs {
     #[arg(value_name = "SVG")]
     pub svg: PathBuf,
     /// Target epsilon: every curve point is within eps x lfs of a sample, spacing maximal.
-    #[arg(long, value_name = "EPS")]
-    pub eps: f64,
+    #[arg(long, value_name = "EPS", required_unless_present = "junctions")]
+    pub eps: Option<f64>,
+    /// Sample every path of the file together, cut where curves cross (X), where an open
+    /// curve ends on another (T) or where ends meet, each junction one shared point (a
+    /// non-manifold ground truth). Spacing from --spacing instead of eps.
+    #[arg(long, conflicts_with_all = ["eps", "offset", "path", "lfs_noise"])]
+    pub junctions: bool,
+    /// With --junctions: the distance between samples along each curve, a fraction of the
+    /// drawing's bounding-box diagonal.
+    #[arg(long, value_name = "F", default_value_t = 0.02, requires = "junctions")]
+    pub spacing: f64,
     /// Start offset along the path, a fraction in [0, 1).
     #[arg(long, value_name = "F", default_value_t = 0.0)]
     pub offset: f64,
@@ -43,8 +54,27 @@ pub struct SampleArgs {
 /// `sigdt sample`.
 pub fn run(args: &SampleArgs) -> Result<()> {
     let paths = curves::read_svg_paths(&args.svg)?;
-    let path = pick(&paths, args.path, &args.svg)?;
-    let labelled =
-        eps_sample(path, args.eps, args.offset, args.lfs_noise, args.seed, !args.ordered)?;
+    let labelled = match args.eps {
+        Some(eps) => {
+            let path = pick(&paths, args.path, &args.svg)?;
+            eps_sample(path, eps, args.offset, args.lfs_noise, args.seed, !args.ordered)?
+        }
+        None => {
+            if paths.is_empty() {
+                anyhow::bail!("{}: no <path> with curve data", args.svg.display());
+            }
+            let junctions = curves::sample_with_junctions(&paths, args.spacing)?;
+            let sample = junctions.sample;
+            let sample = if args.ordered { sample } else { sample.shuffled(args.seed) };
+            crate::messages::note(&format!(
+                "{} points, {} crossings, {} T-junctions, {} shared ends",
+                sample.points.len(),
+                junctions.crossings,
+                junctions.tees,
+                junctions.shared_ends
+            ));
+            Labelled { points: sample.points, gt: sample.edges, truth: None, curve: None }
+        }
+    };
     write_labelled(&args.output, &labelled, &args.svg)
 }

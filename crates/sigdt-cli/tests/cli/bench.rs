@@ -222,6 +222,46 @@ fn sweep_writes_a_table_and_charts() {
     for chart in ["rmse.svg", "exact.svg"] {
         assert!(fs::read_to_string(dir.path().join("sw").join(chart)).unwrap().contains("<svg"));
     }
+    // RMSE is measured against the Bézier curve itself: exact results are off the curve by
+    // the chords' sagittas, more at the sparser eps.
+    let rmse = |level: &str| -> f64 {
+        let row =
+            csv.lines().find(|l| l.starts_with(&format!("eps,{level},sig-connect2d"))).unwrap();
+        row.rsplit(',').next().unwrap().parse().unwrap()
+    };
+    assert!(rmse("0.3") > 1e-4 && rmse("0.5") > rmse("0.3"), "{csv}");
+    assert!(dir.path().join("sw/data/eps_0.3/off00.curve.xy").is_file());
+    let sets = fs::read_to_string(dir.path().join("sw/sets.csv")).unwrap();
+    assert_eq!(sets.lines().count(), 1 + 2 * 20, "{sets}");
+    assert!(sets.starts_with("kind,level,set,n_points,gt_in_sigdt\neps,0.3,off00,"), "{sets}");
+    assert!(sets.lines().skip(1).all(|l| l.ends_with(",1")), "SIGDT contains every GT: {sets}");
+}
+
+#[test]
+fn sample_with_junctions_shares_each_junction() {
+    let dir = tempdir();
+    let d = dir.path();
+    let svg = "<svg><path d='M -1,0 L 1,0'/><path d='M 0,-1 L 0,1'/><path d='M 1,0 C 1,1 2,1 2,2'/></svg>";
+    fs::write(d.join("x.svg"), svg).unwrap();
+    let run =
+        sigdt_in(d, &["sample", "x.svg", "--junctions", "--spacing", "0.05", "-o", "x.xy"], None);
+    run.expect(0);
+    assert!(run.stderr.contains("1 crossings, 0 T-junctions, 1 shared ends"), "{}", run.stderr);
+    let points = fs::read_to_string(d.join("x.xy")).unwrap();
+    let gt = fs::read_to_string(d.join("x.gt")).unwrap();
+    let mut degree = vec![0; points.lines().count()];
+    for line in gt.lines() {
+        for v in line.split_whitespace() {
+            degree[v.parse::<usize>().unwrap()] += 1;
+        }
+    }
+    assert_eq!(degree.iter().filter(|&&k| k == 4).count(), 1, "the crossing");
+    assert_eq!(degree.iter().filter(|&&k| k == 1).count(), 4, "the free ends");
+    sigdt_in(d, &["sample", "x.svg", "--junctions", "--eps", "0.2", "-o", "y.xy"], None)
+        .usage_error();
+    sigdt_in(d, &["sample", "x.svg", "--junctions", "--spacing", "0", "-o", "y.xy"], None)
+        .error(&["spacing 0"]);
+    assert!(!d.join("y.xy").exists());
 }
 
 #[test]

@@ -81,6 +81,24 @@ impl BezierPath {
         }
     }
 
+    /// The chain as a polyline of `steps` points per segment, at parameters `k / steps` (an
+    /// open chain also at its end), with its edges in chain order: the "original curve"
+    /// against which the Bézier experiments measure distances (\[MOW22\] Figs. 14, 17).
+    /// Edges are `[i, j]` with `i < j`, sorted. Empty for an empty chain or `steps == 0`.
+    pub fn polyline(&self, steps: usize) -> sigdt::samplers::Sample {
+        let m = self.segments.len();
+        if m == 0 || steps == 0 {
+            return sigdt::samplers::Sample { points: Vec::new(), edges: Vec::new() };
+        }
+        let n = steps * m + usize::from(!self.closed);
+        let points: Vec<Point> = (0..n).map(|k| self.point(k as f64 / steps as f64)).collect();
+        let mut edges: Vec<sigdt::Edge> = (1..n).map(|k| [k - 1, k]).collect();
+        if self.closed && n > 2 {
+            edges.insert(1, [0, n - 1]);
+        }
+        sigdt::samplers::Sample { points, edges }
+    }
+
     /// The segment and local parameter of global parameter `u`.
     fn locate(&self, u: f64) -> Option<(&[Point; 4], f64)> {
         let m = self.segments.len();
@@ -389,6 +407,21 @@ mod tests {
         assert_eq!(b.point(0.5), [1.5, 0.75]);
         assert_eq!(b.derivative(0.0), [3.0, 3.0]);
         assert_eq!(a.point(4.0), a.point(0.0));
+    }
+
+    #[test]
+    fn polylines_follow_the_chain_closed_or_open() {
+        let curves = parse("<path d='M0 0 H 2 V 2 Z'/><path d='M 0 0 C 1 1 2 1 3 0'/>").unwrap();
+        let closed = curves[0].polyline(4);
+        assert_eq!(closed.points.len(), 12);
+        assert_eq!(closed.edges.len(), 12);
+        assert_eq!(closed.edges[..3], [[0, 1], [0, 11], [1, 2]]);
+        assert_eq!(closed.points[4], [2.0, 0.0]);
+        let open = curves[1].polyline(4);
+        assert_eq!((open.points.len(), open.edges.len()), (5, 4));
+        assert_eq!((open.points[0], open.points[4]), ([0.0, 0.0], [3.0, 0.0]));
+        assert!(curves[1].polyline(0).points.is_empty());
+        assert!(BezierPath::default().polyline(4).edges.is_empty());
     }
 
     #[test]

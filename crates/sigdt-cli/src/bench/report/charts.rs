@@ -1,7 +1,7 @@
 //! The report's charts, built from the benchmark data.
 use super::exact::rate_columns;
 use super::summary::Summary;
-use crate::bench::chart::{grouped_bars, line_chart, log_log_scatter};
+use crate::bench::chart::{box_plots, grouped_bars, line_chart, log_log_scatter};
 
 /// `accuracy.svg`: the exact rate per method in each column of the exact-rate table.
 pub(super) fn accuracy(s: &Summary) -> String {
@@ -66,4 +66,26 @@ pub(super) fn runtime(s: &Summary) -> String {
         })
         .collect();
     log_log_scatter("Runtime", "number of points", "time (ms)", &series)
+}
+
+/// The categories whose symmetric area difference gets a chart of its own: those where exact
+/// rates say little ([MOW22] Figs. 10, 11 and 19).
+pub(super) const SYMDIFF_CATEGORIES: [&str; 3] = ["open", "multiple", "non-manifold"];
+
+/// `symdiff_CATEGORY.svg`: per method, the distribution of the symmetric area difference over
+/// the category's cases where the method finished and the measure is defined; `None` when the
+/// data has no case of `category`.
+pub(super) fn symdiff(s: &Summary, category: &str) -> Option<String> {
+    let cases = s.in_category(category);
+    if cases.is_empty() {
+        return None;
+    }
+    let series: Vec<(String, Vec<f64>)> = s
+        .data
+        .methods
+        .iter()
+        .map(|m| (m.clone(), cases.iter().filter_map(|&i| s.run(i, m)?.symdiff).collect()))
+        .collect();
+    let title = format!("Symmetric area difference, {category} ({} cases)", cases.len());
+    Some(box_plots(&title, "area difference / ground-truth box area", &series))
 }

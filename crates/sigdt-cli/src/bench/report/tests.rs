@@ -97,8 +97,19 @@ fn row<'a>(md: &'a str, start: &str) -> &'a str {
 #[test]
 fn writes_every_file() {
     let (_, names, dir) = report(&sample());
-    let expected = ["report.md", "results.csv", "accuracy.svg", "accuracy_eps.svg", "runtime.svg"];
-    assert_eq!(names, expected);
+    let expected = [
+        "report.md",
+        "results.csv",
+        "accuracy.svg",
+        "accuracy_eps.svg",
+        "runtime.svg",
+        "symdiff_open.svg",
+    ];
+    assert_eq!(names, expected, "the sample has open cases, not multiple or non-manifold ones");
+    let md = fs::read_to_string(dir.path().join("out/report.md")).unwrap();
+    assert!(md.contains("](symdiff_open.svg)") && !md.contains("symdiff_multiple"));
+    let symdiff = fs::read_to_string(dir.path().join("out/symdiff_open.svg")).unwrap();
+    assert!(symdiff.contains("Symmetric area difference, open"));
     let csv = fs::read(dir.path().join("out/results.csv")).unwrap();
     let back = read_results_csv(&csv[..]).unwrap();
     assert_eq!((back.entries, back.cases), (sample().entries, sample().cases));

@@ -8,7 +8,8 @@ use std::path::{Path, PathBuf};
 
 /// Writes the report of `data` into `out_dir` (created if needed) and returns the paths
 /// written: `report.md`, `results.csv`, `accuracy.svg`, `accuracy_eps.svg` (only when the
-/// manifold cases have an ε in `index.csv`) and `runtime.svg`.
+/// manifold cases have an ε in `index.csv`), `runtime.svg` and `symdiff_CATEGORY.svg` for
+/// each of the open, multiple and non-manifold categories present.
 ///
 /// The Markdown holds a header (command, data, machine, time limit, cases per category), the
 /// exact-reconstruction table in the layout of the paper's Table 2, the paper's Table 2 for
@@ -37,6 +38,15 @@ pub fn write_report(data: &BenchData, out_dir: &Path) -> io::Result<Vec<PathBuf>
     md += &exact::paper_section(&data.methods);
     md += "\n## Runtime\n\n![Runtime against number of points, log-log](runtime.svg)\n\n";
     md += &sections::distance_section(&s);
+    let symdiff_charts: Vec<(String, String)> = charts::SYMDIFF_CATEGORIES
+        .iter()
+        .filter_map(|&c| Some((c.to_string(), charts::symdiff(&s, c)?)))
+        .collect();
+    for (category, _) in &symdiff_charts {
+        md += &format!(
+            "\n![Symmetric area difference per method, {category} cases](symdiff_{category}.svg)\n"
+        );
+    }
     md += "\n";
     md += &sections::overlap_section(&data.overlap);
     md += "\n";
@@ -50,6 +60,9 @@ pub fn write_report(data: &BenchData, out_dir: &Path) -> io::Result<Vec<PathBuf>
         save("accuracy_eps.svg", svg.as_bytes())?;
     }
     save("runtime.svg", charts::runtime(&s).as_bytes())?;
+    for (category, svg) in &symdiff_charts {
+        save(&format!("symdiff_{category}.svg"), svg.as_bytes())?;
+    }
     Ok(written)
 }
 
