@@ -105,13 +105,19 @@ bench-python: py-build build
 ## report: the side-by-side evaluation in docs/report/ (issue 4): every method and
 ## shapely.concave_hull on data/curves (or DATA=...) and on the real shapes of data/real
 ## (docs/report/real/) and on the non-manifold drawings of data/non-manifold
-## (docs/report/non-manifold/), then the noise, outlier, lfs-noise and eps sweeps. Takes about
-## ten minutes on 2 cores.
+## (docs/report/non-manifold/), then the noise, outlier, lfs-noise and eps sweeps, then the
+## galleries (docs/report/gallery/; with another DATA, set TABLE1_CASES and NOISE_CASE to its
+## cases). Takes about ten minutes on 2 cores.
 DATA ?= data/curves
 REAL := data/real
 NON_MANIFOLD := data/non-manifold
 REPORT := docs/report
 SWEEPS := $(TARGET_DIR)/sweeps
+## The galleries: Table 1's kind of case (SIG-CONNECT2D exact where most methods fail), Fig.
+## 15's noise pictures (exact at 0.01 % uniform noise, not at 0.03 %), one drawing per kind.
+TABLE1_CASES ?= svg_manif_blob2_path0_0_13,manif_blob_0022
+NOISE_CASE ?= manif_blob_0022
+NON_MANIFOLD_CASES ?= nm_theta_00,nm_cross_00,nm_pierced_00,nm_tee_00,nm_star_00,nm_overlap_00,nm_hash_00
 report: build py-build
 	rm -rf $(TARGET_DIR)/concave-hull $(TARGET_DIR)/concave-hull-real \
 	  $(TARGET_DIR)/concave-hull-non-manifold $(SWEEPS)
@@ -131,6 +137,16 @@ report: build py-build
 	for k in noise outliers lfs-noise eps; do \
 	  for f in sweep.csv sets.csv rmse.svg exact.svg; do cp $(SWEEPS)/$$k/$$f $(REPORT)/sweeps/$$k-$$f; done; \
 	done
+	rm -rf $(REPORT)/gallery $(REPORT)/real/gallery $(REPORT)/non-manifold/gallery
+	$(SIGDT) gallery $(DATA) --cases $(TABLE1_CASES) --out $(REPORT)/gallery/table1
+	for l in 0.0001 0.0003; do \
+	  $(SIGDT) gallery $(SWEEPS)/noise/data/noise_$$l --cases $(NOISE_CASE) \
+	    --method sig-connect2d,sig-auto,connect2d,crust --out $(REPORT)/gallery/noise-$$l; \
+	done
+	$(SIGDT) gallery $(DATA) --failures $(REPORT)/results.csv --out $(REPORT)/gallery/failures
+	$(SIGDT) gallery $(REAL) --failures $(REPORT)/real/results.csv --largest 1500 \
+	  --out $(REPORT)/real/gallery
+	$(SIGDT) gallery $(NON_MANIFOLD) --cases $(NON_MANIFOLD_CASES) --out $(REPORT)/non-manifold/gallery
 
 ## data-non-manifold: regenerates data/non-manifold, the seeded non-manifold drawings (a
 ## test checks the folder against the generator).

@@ -10,6 +10,7 @@ use clap::{Parser, Subcommand};
 use crate::cmd::bench::BenchArgs;
 use crate::cmd::bench_worker::WorkerArgs;
 use crate::cmd::eval::EvalArgs;
+use crate::cmd::gallery::GalleryArgs;
 use crate::cmd::graph::GraphArgs;
 use crate::cmd::perturb::PerturbArgs;
 use crate::cmd::reconstruct::ReconstructArgs;
@@ -116,6 +117,9 @@ pub enum Command {
     /// Draw the points and chosen layers (Delaunay, SIG circles, SIGDT, SIGDT2, boundary
     /// after inflating, result, ground truth with missing and extra edges) as SVG or PNG.
     Render(RenderArgs),
+    /// Draw chosen cases through every method, or each method's failures from a results.csv
+    /// of `sigdt bench`, with a Markdown page (the paper's Table 1 and failure figures).
+    Gallery(GalleryArgs),
     /// Write a self-contained HTML viewer: pan, zoom, layer toggles, and a slider that
     /// replays inflating and sculpting one triangle at a time.
     View(ViewArgs),

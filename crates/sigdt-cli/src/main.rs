@@ -46,6 +46,7 @@ fn main() -> ExitCode {
         Command::Perturb(args) => cmd::perturb::run(&args, &input),
         Command::Sweep(args) => cmd::sweep::run(&args),
         Command::Render(args) => cmd::render::run(&args, &input),
+        Command::Gallery(args) => cmd::gallery::run(&args),
         Command::View(args) => cmd::view::run(&args, &input),
         Command::BenchWorker(args) => cmd::bench_worker::run(&args),
     };

@@ -3,6 +3,7 @@
 pub mod bench;
 pub mod bench_worker;
 pub mod eval;
+pub mod gallery;
 pub mod graph;
 pub mod perturb;
 pub mod reconstruct;

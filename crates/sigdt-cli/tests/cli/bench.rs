@@ -294,3 +294,36 @@ fn a_sweep_never_writes_into_its_own_input() {
     assert_eq!(fs::read(data.path().join("index.csv")).unwrap(), index);
     assert!(!data.path().join("data").exists() && !data.path().join("sweep.csv").exists());
 }
+
+#[test]
+fn gallery_draws_cases_and_each_methods_failures() {
+    let data = labelled_folder();
+    let out = tempdir();
+    let (d, o) = (data.path().to_str().unwrap(), out.path());
+    let rep = o.join("rep");
+    sigdt(&["bench", d, "--method", "sig-connect2d,emst", "--out", rep.to_str().unwrap()])
+        .expect(0);
+    let results = rep.join("results.csv");
+    let failures = o.join("failures");
+    let args = ["gallery", d, "--failures", results.to_str().unwrap(), "--out"];
+    sigdt(&[&args[..], &[failures.to_str().unwrap()]].concat()).expect(0);
+    let page = fs::read_to_string(failures.join("gallery.md")).unwrap();
+    assert!(page.contains("## `emst`: 3 of 3 cases not exact"), "{page}");
+    assert!(page.contains("## `sig-connect2d`: 1 of 3 cases not exact"), "{page}");
+    assert!(page.contains("`broken` (failed)"), "{page}");
+    assert!(page.contains("](emst/gon.emst.svg)"), "{page}");
+    let svg = fs::read_to_string(failures.join("emst/square.emst.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("emst: "), "{svg}");
+
+    let table = o.join("table");
+    let args = ["gallery", d, "--cases", "gon", "--method", "sig-connect2d,emst", "--out"];
+    sigdt(&[&args[..], &[table.to_str().unwrap()]].concat()).expect(0);
+    let page = fs::read_to_string(table.join("gallery.md")).unwrap();
+    assert!(page.contains("`sig-connect2d`: exact (polygon)"), "{page}");
+    assert!(table.join("gon.emst.svg").is_file());
+
+    let nope = ["gallery", d, "--cases", "nope", "--out", table.to_str().unwrap()];
+    sigdt(&nope).error(&["no case 'nope'"]);
+    sigdt(&["gallery", d, "--out", table.to_str().unwrap()]).usage_error();
+    sigdt(&["gallery", d, "--cases", "gon", "--out", d]).error(&["is the data folder"]);
+}
