@@ -328,7 +328,8 @@ fn nearest(tree: &KdTree, x: Point) -> f64 {
     tree.nearest(x, 1, u32::MAX).first().map_or(f64::INFINITY, |&(d2, _)| d2.sqrt())
 }
 
-fn diagonal(points: &[Point]) -> f64 {
+/// The diagonal of the bounding box of `points`; infinite for none.
+pub(super) fn diagonal(points: &[Point]) -> f64 {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for p in points {
         for a in 0..2 {

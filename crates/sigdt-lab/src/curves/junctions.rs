@@ -37,6 +37,7 @@ use sigdt::internals::{orient2d, segments_cross};
 use sigdt::samplers::Sample;
 use sigdt::{Edge, Error, Point, Result};
 
+use super::eps_sampling::diagonal;
 use super::BezierPath;
 
 /// Polyline points per Bézier segment in the crossing search.
@@ -94,7 +95,8 @@ pub fn sample_with_junctions(paths: &[BezierPath], spacing: f64) -> Result<Junct
         )));
     }
     let lines: Vec<Polyline> = paths.iter().map(|p| Polyline::of(p)).collect();
-    let diag = diagonal(lines.iter().flat_map(|l| l.points.iter().copied()));
+    let all: Vec<Point> = lines.iter().flat_map(|l| l.points.iter().copied()).collect();
+    let diag = diagonal(&all);
     if !(diag > 0.0 && diag.is_finite()) {
         return Err(bad("its curves have no extent".into()));
     }
@@ -346,19 +348,9 @@ fn lerp(p: Point, q: Point, t: f64) -> Point {
     [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]
 }
 
+/// Euclidean distance by `hypot`, which the stored `data/non-manifold` was generated with.
 fn dist(p: Point, q: Point) -> f64 {
     (p[0] - q[0]).hypot(p[1] - q[1])
-}
-
-fn diagonal(points: impl Iterator<Item = Point>) -> f64 {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in points {
-        for a in 0..2 {
-            lo[a] = lo[a].min(p[a]);
-            hi[a] = hi[a].max(p[a]);
-        }
-    }
-    (hi[0] - lo[0]).hypot(hi[1] - lo[1])
 }
 
 #[cfg(test)]
