@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold
+.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold wheel wheel-test man
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -39,9 +39,10 @@ demo: build
 	@echo "wrote out/$(DEMO).edges, out/$(DEMO).loops, out/$(DEMO).svg (the README picture), out/$(DEMO).png,"
 	@echo "      out/glyph_e_reversed.html (open it in a browser: the steps of inflating and sculpting)"
 
-## test: formatting, lints, every Rust test (unit, property, golden, CLI), docs, and the
-## Python package's tests (binding contract, properties, docs, Dask, CLI parity).
-test: lint rust-test doc py-test
+## test: formatting, lints, every Rust test (unit, property, golden, CLI), docs, the Python
+## package's tests (binding contract, properties, docs, Dask, CLI parity), and the same
+## Python and CLI tests against the installed wheel (wheel-test).
+test: lint rust-test doc py-test wheel-test
 
 $(VENV)/.installed: requirements-dev.txt
 	$(PYTHON) -m venv $(VENV)
@@ -51,6 +52,29 @@ $(VENV)/.installed: requirements-dev.txt
 ## py-build: build the extension in release mode into .venv (maturin develop).
 py-build: $(VENV)/.installed
 	VIRTUAL_ENV=$(abspath $(VENV)) $(VENV)/bin/maturin develop --release --locked --quiet
+
+## wheel: the Python package as a stripped abi3 wheel in target/wheels (maturin; tagged
+## manylinux by maturin's own symbol check, so it installs without a Rust toolchain).
+WHEELS := $(TARGET_DIR)/wheels
+wheel: $(VENV)/.installed
+	rm -f $(WHEELS)/sigdt-*.whl
+	VIRTUAL_ENV=$(abspath $(VENV)) $(VENV)/bin/maturin build --release --locked --strip --quiet \
+	  --out $(WHEELS)
+
+## wheel-test: installs the wheel into a fresh virtualenv and, with no cargo on PATH, runs
+## the Python tests against it (all but the browser test; test_installed.py checks that
+## `python -m sigdt` is the same command line) and the CLI tests against its `sigdt` script.
+WHEEL_VENV := $(abspath $(TARGET_DIR))/wheel-venv
+WHEEL_DEPS := $(shell grep -E '^(pytest|numpy|shapely|matplotlib|hypothesis|dask|distributed)' requirements-dev.txt)
+wheel-test: wheel
+	rm -rf $(WHEEL_VENV)
+	$(PYTHON) -m venv $(WHEEL_VENV)
+	$(WHEEL_VENV)/bin/pip install --quiet --disable-pip-version-check $(WHEELS)/sigdt-*.whl \
+	  $(WHEEL_DEPS)
+	cd $(WHEEL_VENV) && env PATH=$(WHEEL_VENV)/bin:/usr/bin:/bin SIGDT_CLI=$(WHEEL_VENV)/bin/sigdt \
+	  SIGDT_WHEEL_TEST=1 bin/python -m pytest -q -p no:cacheprovider -c $(abspath pyproject.toml) \
+	  --rootdir $(abspath .) $(abspath python/tests) --ignore $(abspath python/tests/test_viewer.py)
+	SIGDT_CLI=$(WHEEL_VENV)/bin/sigdt $(CARGO) test --locked -p sigdt-cli --test cli -q
 
 py-lint: $(VENV)/.installed
 	$(VENV)/bin/ruff check python
@@ -91,6 +115,11 @@ bench: build
 	  --cgal $(CGAL_TOOL) --cli $(SIGDT)
 	$(CARGO) run --release --locked -p sigdt --example methods -- --sizes 1e3,1e4,1e5 \
 	  --methods sig-connect2d,fit-connect,stretch-denoise,discur,optimal-transport --limit 30
+
+## man: the man pages of sigdt and its subcommands in target/man (from the clap definitions;
+## `man -l target/man/sigdt.1`). Shell completions: `sigdt completions bash|zsh|fish`.
+man: build
+	$(SIGDT) manpages --out $(TARGET_DIR)/man
 
 ## cgal-delaunay: the bench-only CGAL baseline (GPL-3, tools/cgal-delaunay/; needs libcgal-dev).
 cgal-delaunay: $(CGAL_TOOL)

@@ -173,7 +173,8 @@ class Reconstruction:
         """The result as a shapely geometry: ``Polygon`` (one loop), ``MultiPolygon``
         (several), ``LineString`` (one path, or empty), ``MultiLineString`` (several).
 
-        Needs the optional dependency ``shapely`` (``pip install sigdt[shapely]``).
+        Needs the optional dependency ``shapely`` (the ``shapely`` extra, or
+        ``pip install shapely``).
         """
         from .shapely import to_shapely
 
@@ -189,7 +190,8 @@ class Reconstruction:
     def plot(self, ax: Any = None, **style: Any) -> Any:
         """Draw points, edges and filled loops with matplotlib; returns the axes.
 
-        Needs the optional dependency ``matplotlib`` (``pip install sigdt[plot]``).
+        Needs the optional dependency ``matplotlib`` (the ``plot`` extra, or
+        ``pip install matplotlib``).
         """
         from .plot import plot
 

@@ -38,7 +38,10 @@ def curves_dir() -> Path:
 
 @pytest.fixture(scope="session")
 def cli() -> Path:
-    """The release CLI binary (``make py-test`` builds it first)."""
+    """The release CLI binary (``make py-test`` builds it first), or the program in
+    ``$SIGDT_CLI`` (``make wheel-test``: the wheel's ``sigdt`` script)."""
+    if os.environ.get("SIGDT_CLI"):
+        return Path(os.environ["SIGDT_CLI"])
     target = Path(os.environ.get("CARGO_TARGET_DIR") or ROOT / "target")
     if not target.is_absolute():
         target = ROOT / target

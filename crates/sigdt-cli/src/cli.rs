@@ -9,6 +9,7 @@ use clap::{Parser, Subcommand};
 
 use crate::cmd::bench::BenchArgs;
 use crate::cmd::bench_worker::WorkerArgs;
+use crate::cmd::completions::{CompletionsArgs, ManpagesArgs};
 use crate::cmd::eval::EvalArgs;
 use crate::cmd::gallery::GalleryArgs;
 use crate::cmd::graph::GraphArgs;
@@ -123,6 +124,11 @@ pub enum Command {
     /// Write a self-contained HTML viewer: pan, zoom, layer toggles, and a slider that
     /// replays inflating and sculpting one triangle at a time.
     View(ViewArgs),
+    /// Print a shell completion script (bash, zsh, fish, elvish, powershell).
+    Completions(CompletionsArgs),
+    /// Internal: write the man pages (`make man`).
+    #[command(hide = true)]
+    Manpages(ManpagesArgs),
     /// Internal: one method on one case, for `sigdt bench`.
     #[command(hide = true)]
     BenchWorker(WorkerArgs),

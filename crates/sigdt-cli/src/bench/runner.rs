@@ -4,12 +4,12 @@
 //! A worker that exits with an error, crashes, prints nothing usable or outlives the time
 //! limit is recorded as a failure or a time-out of that one pair; the run goes on.
 
-use std::ffi::OsStr;
+use std::ffi::{OsStr, OsString};
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
+use std::sync::{Mutex, OnceLock};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result};
@@ -33,15 +33,37 @@ pub struct Plan<'a> {
     pub jobs: usize,
 }
 
-/// The executable that workers run: this process's own. On Linux that is `/proc/self/exe`,
-/// which stays the running binary even when a rebuild replaces the file at its path during
-/// a long bench (the path would then start the new binary, or nothing).
-fn worker_exe() -> Result<PathBuf> {
-    let own = Path::new("/proc/self/exe");
-    if own.exists() {
-        return Ok(own.to_path_buf());
+/// The command that starts a worker when this process is not the `sigdt` binary itself.
+static WORKER_COMMAND: OnceLock<Vec<OsString>> = OnceLock::new();
+
+/// Sets the program and leading arguments that run `sigdt` in a new process, for hosts of
+/// the command line other than the binary: the Python package sets `[python, -m, sigdt]`.
+/// The first call wins.
+pub fn set_worker_command(command: Vec<OsString>) {
+    let _ = WORKER_COMMAND.set(command);
+}
+
+/// The program that workers run, and its leading arguments: the command set by
+/// [`set_worker_command`], else this process's own executable. On Linux that is
+/// `/proc/self/exe`, which stays the running binary even when a rebuild replaces the file at
+/// its path during a long bench (the path would then start the new binary, or nothing).
+fn worker_exe() -> Result<WorkerExe> {
+    if let Some([program, leading @ ..]) = WORKER_COMMAND.get().map(Vec::as_slice) {
+        return Ok(WorkerExe { program: PathBuf::from(program), leading: leading.to_vec() });
     }
-    std::env::current_exe().context("cannot locate the sigdt executable")
+    let own = Path::new("/proc/self/exe");
+    let program = if own.exists() {
+        own.to_path_buf()
+    } else {
+        std::env::current_exe().context("cannot locate the sigdt executable")?
+    };
+    Ok(WorkerExe { program, leading: Vec::new() })
+}
+
+/// How to start `sigdt` in a new process: a program and its leading arguments.
+struct WorkerExe {
+    program: PathBuf,
+    leading: Vec<OsString>,
 }
 
 /// Runs `plan` over `cases`; entries are in (case, method) order whatever `jobs` is.
@@ -77,7 +99,7 @@ pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
 }
 
 /// Runs one worker and turns whatever happened into an [`Outcome`].
-fn run_one(exe: &Path, plan: &Plan<'_>, case: &dataset::Case, method: &str) -> Outcome {
+fn run_one(exe: &WorkerExe, plan: &Plan<'_>, case: &dataset::Case, method: &str) -> Outcome {
     let repeat = plan.repeat.to_string();
     match spawn_worker(exe, &case.files(plan.dir), ["--method", method, "--repeat", &repeat]) {
         Err(e) => Outcome::Failed(format!("cannot start the worker: {e}")),
@@ -88,11 +110,12 @@ fn run_one(exe: &Path, plan: &Plan<'_>, case: &dataset::Case, method: &str) -> O
 /// Starts `sigdt bench-worker ARGS POINTS GT [--truth TRUTH] [--curve XY --curve-gt GT]` on a
 /// case's files, its output piped.
 fn spawn_worker<A: AsRef<OsStr>>(
-    exe: &Path,
+    exe: &WorkerExe,
     files: &dataset::CaseFiles,
     args: impl IntoIterator<Item = A>,
 ) -> std::io::Result<Child> {
-    let mut command = Command::new(exe);
+    let mut command = Command::new(&exe.program);
+    command.args(&exe.leading);
     command.arg("bench-worker").args(args).arg(&files.points).arg(&files.gt);
     if let Some(truth) = &files.truth {
         command.arg("--truth").arg(truth);

@@ -2,6 +2,7 @@
 
 pub mod bench;
 pub mod bench_worker;
+pub mod completions;
 pub mod eval;
 pub mod gallery;
 pub mod graph;

@@ -100,7 +100,7 @@ fn broken_pipe_is_quiet_success() {
     let dir = tempdir();
     write_points(dir.path(), "big.xy", &circle(20_000, 100.0));
     for read_first_line in [false, true] {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_sigdt"))
+        let mut child = sigdt_command()
             .args(["reconstruct", "big.xy"])
             .current_dir(dir.path())
             .stdin(Stdio::null())
@@ -176,7 +176,7 @@ fn a_read_only_file_is_refused_and_a_dangling_link_is_written_through() {
 fn help_and_version_that_cannot_be_written_fail() {
     for args in [&["--help"][..], &["reconstruct", "--help"], &["--version"]] {
         let full = fs::File::create("/dev/full").unwrap();
-        let status = std::process::Command::new(env!("CARGO_BIN_EXE_sigdt"))
+        let status = sigdt_command()
             .args(args)
             .stdout(full)
             .stderr(std::process::Stdio::null())
@@ -204,7 +204,7 @@ fn a_run_stopped_while_writing_leaves_no_temporary_file() {
     write_points(dir.path(), "cloud.xy", &points);
     fs::write(dir.path().join("dt.edges"), "old\n").unwrap();
     for signal in ["TERM", "INT", "HUP"] {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_sigdt"))
+        let mut child = sigdt_command()
             .args(["graph", "cloud.xy", "--kind", "dt", "-o", "dt.edges"])
             .current_dir(dir.path())
             .stderr(Stdio::null())

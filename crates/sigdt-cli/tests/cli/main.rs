@@ -1,5 +1,7 @@
 //! End-to-end tests of the `sigdt` binary: outputs, formats, exit statuses, error messages,
-//! output-file safety and the documented results for degenerate input.
+//! output-file safety and the documented results for degenerate input. With `SIGDT_CLI` set
+//! they test that command instead (`make wheel-test`: the wheel's `sigdt` script and
+//! `python -m sigdt`).
 //!
 //! Exit statuses: 0 success, 1 error, 2 usage error. An unknown `--method` is a usage error
 //! (2): clap checks it against `Method::ALL` before anything runs.
@@ -94,9 +96,24 @@ impl std::fmt::Display for Run {
     }
 }
 
+/// The command under test: the cargo-built binary, or the command in `SIGDT_CLI` (a program
+/// and its leading arguments, separated by spaces), such as the Python package's `sigdt`
+/// script or `python -m sigdt`, which must behave exactly the same.
+fn sigdt_command() -> Command {
+    match std::env::var("SIGDT_CLI") {
+        Ok(command) if !command.trim().is_empty() => {
+            let mut words = command.split_whitespace();
+            let mut c = Command::new(words.next().expect("a program"));
+            c.args(words);
+            c
+        }
+        _ => Command::new(env!("CARGO_BIN_EXE_sigdt")),
+    }
+}
+
 /// Runs `sigdt args...` in `dir` with `stdin` as standard input (empty if `None`).
 fn sigdt_in(dir: &Path, args: &[&str], stdin: Option<&str>) -> Run {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_sigdt"))
+    let mut child = sigdt_command()
         .args(args)
         .current_dir(dir)
         .stdin(Stdio::piped())

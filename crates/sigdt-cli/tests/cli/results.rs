@@ -268,3 +268,26 @@ fn a_method_with_vertices_of_its_own_writes_coordinates_not_indices() {
     assert!(!input.iter().all(|p| text.contains(p.as_str())), "{wkt}");
     assert!(run("svg").ok().stdout.contains("drawn at the method&apos;s 10 vertices"));
 }
+
+#[test]
+fn completions_and_man_pages_come_from_the_definitions() {
+    for (shell, needle) in
+        [("bash", "_sigdt()"), ("zsh", "#compdef sigdt"), ("fish", "complete -c sigdt")]
+    {
+        let run = sigdt(&["completions", shell]);
+        run.ok();
+        assert!(run.stdout.contains(needle), "{shell}: no {needle:?}\n{run}");
+        for word in ["reconstruct", "gallery", "method", "sig-connect2d"] {
+            assert!(run.stdout.contains(word), "{shell} completion lacks {word:?}");
+        }
+    }
+    sigdt(&["completions", "tcsh"]).usage_error();
+    let dir = tempdir();
+    sigdt_in(dir.path(), &["manpages", "--out", "man"], None).expect(0);
+    let top = fs::read_to_string(dir.path().join("man/sigdt.1")).unwrap();
+    assert!(top.starts_with(".ie \\n(.g .ds Aq") || top.contains(".TH sigdt"), "{top}");
+    let page = fs::read_to_string(dir.path().join("man/sigdt-reconstruct.1")).unwrap();
+    assert!(page.contains(".TH sigdt-reconstruct") && page.contains("sigdt reconstruct"));
+    assert!(page.contains("no\\-leaf\\-elimination"), "{page}");
+    assert!(!dir.path().join("man/sigdt-bench-worker.1").exists());
+}

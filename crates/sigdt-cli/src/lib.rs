@@ -1,0 +1,96 @@
+//! `sigdt`: reconstruct curves from unorganised 2D points on the command line.
+//!
+//! The command line is a library so that two programs can run it: the `sigdt` binary
+//! (`main.rs`) and the Python package's `sigdt` script and `python -m sigdt` (through the
+//! extension `sigdt._core`). It is not an API: [`run`] takes the arguments and returns the
+//! exit status, and a usage error or a signal may end the process from inside.
+//!
+//! [`run`] only parses the arguments, runs the command and maps errors to exit statuses:
+//! 0 for success, 1 for an error (one line `sigdt: <message>` on stderr), 2 for a usage
+//! error (reported by clap).
+//!
+//! Each subcommand has a file of its own in [`cmd`], holding its arguments beside the code
+//! that runs it. The commands share [`input`] (reading points and ground truth),
+//! [`messages`] (stderr), [`methods`] (the `--method` parser), [`labelled`] (labelled
+//! samples and their files), [`output`] and [`format`](mod@format); none of those imports a command.
+
+mod bench;
+mod cli;
+mod cmd;
+mod format;
+mod input;
+mod labelled;
+mod messages;
+mod methods;
+mod output;
+mod png;
+mod view;
+
+use std::ffi::OsString;
+use std::io::Write;
+
+use clap::{CommandFactory, Parser};
+
+use crate::cli::{Cli, Command};
+use crate::input::Input;
+use crate::messages::UsageError;
+
+pub use bench::runner::set_worker_command;
+
+/// Runs the command line `args` (the first one is the program's name) and returns the exit
+/// status. Usage errors found after parsing, and SIGINT, SIGTERM or SIGHUP, end the process
+/// from inside with status 2 or 130.
+pub fn run(args: impl IntoIterator<Item = OsString>) -> u8 {
+    let status = run_command(args);
+    // Text written without a final newline must not wait for a process exit to be flushed.
+    let _ = std::io::stdout().flush();
+    status
+}
+
+fn run_command(args: impl IntoIterator<Item = OsString>) -> u8 {
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(err) => return clap_exit(&err),
+    };
+    let input = Input::new(cli.max_points);
+    output::remove_pending_on_signals();
+    let result = match cli.command {
+        Command::Reconstruct(args) => cmd::reconstruct::run(&args, &input),
+        Command::Graph(args) => cmd::graph::run(&args, &input),
+        Command::Bench(args) => cmd::bench::run(&args),
+        Command::Eval(args) => cmd::eval::run(&args, &input),
+        Command::Sample(args) => cmd::sample::run(&args),
+        Command::Perturb(args) => cmd::perturb::run(&args, &input),
+        Command::Sweep(args) => cmd::sweep::run(&args),
+        Command::Render(args) => cmd::render::run(&args, &input),
+        Command::Gallery(args) => cmd::gallery::run(&args),
+        Command::View(args) => cmd::view::run(&args, &input),
+        Command::Completions(args) => cmd::completions::completions(&args),
+        Command::Manpages(args) => cmd::completions::manpages(&args),
+        Command::BenchWorker(args) => cmd::bench_worker::run(&args),
+    };
+    match result {
+        Ok(()) => 0,
+        Err(err) => match err.downcast_ref::<UsageError>() {
+            Some(usage) => usage.exit(Cli::command()),
+            None => {
+                messages::note(&format!("sigdt: {}", messages::one_line(&err)));
+                1
+            }
+        },
+    }
+}
+
+/// Prints clap's help, version or usage error and returns its exit status, or 1 when the
+/// text cannot be written (`--help > /dev/full` must not report success).
+fn clap_exit(err: &clap::Error) -> u8 {
+    let printed = err.print().and_then(|()| std::io::stdout().flush());
+    match printed {
+        Ok(()) => err.exit_code().clamp(0, 255) as u8,
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => 0,
+        Err(e) => {
+            messages::note(&format!("sigdt: <stdout>: {e}"));
+            1
+        }
+    }
+}
