@@ -28,7 +28,19 @@ Input (INPUT is a file, or '-' for standard input):
                                    comment; blank lines are skipped; the first line may
                                    be a header if none of its fields is a number ('x,y')
   .gtn (Dey's CurveRecon)          a header 'N 2 0 0', then N lines 'index x y'
-  other extensions and stdin       the format is detected from the first line
+  CSV table (.csv .tsv)            ',' ';' or tab separators, quoted fields, a header row;
+                                   x and y from --columns X,Y (names or numbers from 1),
+                                   else the only two columns or columns named x/y,
+                                   lon/lat, longitude/latitude; ';' files may use
+                                   decimal commas
+  WKT (.wkt)                       POINT, MULTIPOINT, LINESTRING, POLYGON, MULTI*,
+                                   GEOMETRYCOLLECTION: every vertex (a ring's closing
+                                   vertex once)
+  GeoJSON (.geojson .json)         FeatureCollection, Feature, any geometry: every
+                                   position; also a JSON array of [x, y] pairs
+  NumPy (.npy)                     an (n, 2) array of floats or integers
+  gzip (.gz)                       any of these compressed, read as it is decompressed
+  other extensions and stdin       the format is detected from the content
 Points are numbered from 0 in file order; all indices in the output refer to them.
 NaN or infinite coordinates, and lines that are not two numbers, are errors.";
 
@@ -86,6 +98,10 @@ pub struct Cli {
     #[arg(long, global = true, value_name = "N", default_value_t = DEFAULT_MAX_POINTS,
           value_parser = RangedU64ValueParser::<usize>::new().range(1..))]
     pub max_points: usize,
+    /// Read the points from these columns of a CSV table: names from its header row or
+    /// numbers from 1, for example `--columns lon,lat` or `--columns 3,4`.
+    #[arg(long, global = true, value_name = "X,Y")]
+    pub columns: Option<crate::read::Columns>,
 }
 
 /// Default of `--max-points`: 10^8 points (1.6 GB of coordinates).

@@ -8,37 +8,68 @@ use std::path::Path;
 use anyhow::Result;
 use sigdt::{Edge, Point};
 
+use crate::messages::UsageError;
 use crate::output::is_dash;
+use crate::read::{self, Columns, Reading};
 
 /// The settings every command's input reading shares, from the global flags.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct Input {
     /// `--max-points`: reading stops at the first line over it.
     max_points: usize,
+    /// `--columns`: the x and y columns of a table.
+    columns: Option<Columns>,
 }
 
 impl Input {
-    /// Input reading with at most `max_points` points.
-    pub fn new(max_points: usize) -> Input {
-        Input { max_points }
+    /// Input reading with at most `max_points` points, from `columns` of a table if given.
+    pub fn new(max_points: usize, columns: Option<Columns>) -> Input {
+        Input { max_points, columns }
     }
 
-    /// The points of `input`, a file or `-` for standard input.
+    /// The points of `input`, a file or `-` for standard input, in any format of
+    /// [`crate::read`].
     pub fn points(&self, input: &Path) -> Result<Vec<Point>> {
-        let max = self.max_points;
+        let how = Reading { max_points: self.max_points, columns: self.columns.as_ref() };
         if is_dash(input) {
-            Ok(sigdt::io::parse_points_at_most(io::stdin().lock(), "<stdin>", None, max)?)
+            read::points(io::stdin().lock(), "<stdin>", how)
         } else {
-            Ok(sigdt::io::read_points_at_most(input, max)?)
+            let name = input.display().to_string();
+            let file = std::fs::File::open(input)
+                .map_err(|source| sigdt::Error::Io { path: name.clone(), source })?;
+            read::points(file, &name, how)
         }
     }
 }
 
-/// The ground truth of `--gt`, if given, for `n` points: reading stops at the first index
-/// past them or the first line past `3n` edges (an endless file is refused, not read whole).
-pub fn ground_truth(path: Option<&Path>, n: usize) -> Result<Option<Vec<Edge>>> {
-    let Some(path) = path else { return Ok(None) };
-    Ok(Some(sigdt::io::read_edges_of(path, n)?))
+/// The ground truth of `--gt`, if given, for `n` points (see [`edges_of`]).
+pub fn ground_truth(
+    path: Option<&Path>,
+    n: usize,
+    command: &'static str,
+) -> Result<Option<Vec<Edge>>> {
+    path.map(|path| edges_of(path, n, command, "--gt")).transpose()
+}
+
+/// The edges of the file `path` given as `flag` of `command`, for `n` points: reading stops
+/// at the first index past them or the first line past `3n` edges (an endless file is
+/// refused, not read whole). An index past the points means the file belongs to other
+/// points: a usage error (exit status 2), like any other mismatch of the arguments.
+pub fn edges_of(path: &Path, n: usize, command: &'static str, flag: &str) -> Result<Vec<Edge>> {
+    sigdt::io::read_edges_of(path, n).map_err(|err| match &err {
+        sigdt::Error::Parse { message, .. } if is_index_past_the_points(message) => UsageError {
+            command,
+            kind: clap::error::ErrorKind::ArgumentConflict,
+            message: format!("{flag} {err}: it is not a graph on the {n} input points"),
+        }
+        .into(),
+        _ => err.into(),
+    })
+}
+
+/// Whether a parse message of [`sigdt::io::read_edges_of`] is about an index past the points.
+fn is_index_past_the_points(message: &str) -> bool {
+    message.starts_with("edge ") && message.contains(" refers to point ")
 }
 
 /// The default title of a picture of `n` points read from `input`: its file stem (or
@@ -52,4 +83,25 @@ pub fn picture_title(input: &Path, n: usize) -> String {
             .map_or_else(|| input.display().to_string(), |s| s.to_string_lossy().into_owned())
     };
     format!("{name} ({n} points)")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_index_past_the_points_is_a_usage_error() {
+        let dir = tempfile::tempdir().unwrap();
+        let gt = dir.path().join("t.gt");
+        std::fs::write(&gt, "0 1\n1 7\n").unwrap();
+        let err = edges_of(&gt, 3, "eval", "--gt").unwrap_err();
+        let usage = err.downcast_ref::<UsageError>().expect("a usage error");
+        assert!(usage.message.starts_with("--gt "), "{}", usage.message);
+        assert!(usage
+            .message
+            .contains("t.gt:2: edge 1 7 refers to point 7, but there are 3 points"));
+        std::fs::write(&gt, "0 x\n").unwrap();
+        let err = edges_of(&gt, 3, "eval", "--gt").unwrap_err();
+        assert!(err.downcast_ref::<UsageError>().is_none(), "a bad line is an error in the file");
+    }
 }

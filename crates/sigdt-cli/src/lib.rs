@@ -24,6 +24,7 @@ mod messages;
 mod methods;
 mod output;
 mod png;
+mod read;
 mod view;
 
 use std::ffi::OsString;
@@ -52,7 +53,7 @@ fn run_command(args: impl IntoIterator<Item = OsString>) -> u8 {
         Ok(cli) => cli,
         Err(err) => return clap_exit(&err),
     };
-    let input = Input::new(cli.max_points);
+    let input = Input::new(cli.max_points, cli.columns.clone());
     output::remove_pending_on_signals();
     let result = match cli.command {
         Command::Reconstruct(args) => cmd::reconstruct::run(&args, &input),

@@ -6,7 +6,7 @@ use anyhow::Result;
 use clap::Args;
 use sigdt::{Method, Options};
 
-use crate::input::Input;
+use crate::input::{edges_of, Input};
 
 /// `sigdt eval`.
 #[derive(Debug, Args)]
@@ -29,9 +29,11 @@ pub struct EvalArgs {
 /// `sigdt eval`.
 pub fn run(args: &EvalArgs, input: &Input) -> Result<()> {
     let points = input.points(&args.input)?;
-    let gt = sigdt::io::read_edges_of(&args.gt, points.len())?;
+    let gt = edges_of(&args.gt, points.len(), "eval", "--gt")?;
     let (label, edges) = match &args.edges {
-        Some(file) => (file.display().to_string(), sigdt::io::read_edges_of(file, points.len())?),
+        Some(file) => {
+            (file.display().to_string(), edges_of(file, points.len(), "eval", "--edges")?)
+        }
         None => {
             let options = Options { method: args.method, ..Options::default() };
             (args.method.to_string(), sigdt::reconstruct(&points, &options)?.edges)

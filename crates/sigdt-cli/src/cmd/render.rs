@@ -69,7 +69,7 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     };
     let output = Output::new(Some(&args.output), &args.input)?;
     let points = input.points(&args.input)?;
-    let gt = ground_truth(args.gt.as_deref(), points.len())?;
+    let gt = ground_truth(args.gt.as_deref(), points.len(), "render")?;
     let mut wanted = args.layers.clone();
     if wanted.is_empty() {
         wanted = vec![Layer::Points, Layer::Result];

@@ -39,7 +39,7 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
     }
     let output = Output::new(Some(&args.output), &args.input)?;
     let points = input.points(&args.input)?;
-    let gt = ground_truth(args.gt.as_deref(), points.len())?;
+    let gt = ground_truth(args.gt.as_deref(), points.len(), "view")?;
     // One triangulation serves the reconstruction, the graphs and the SIG radii.
     let dt = Triangulation::new(&points)?;
     let options = Options { method: args.method, ..Options::default() };

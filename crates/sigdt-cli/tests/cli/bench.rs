@@ -155,8 +155,9 @@ fn eval_scores_a_method_and_an_edge_file() {
     assert!(run.stdout.contains("epsilon:"), "{run}");
     fs::write(dir.path().join("bad.edges"), "0 1\n1 99\n").unwrap();
     let bad = dir.path().join("bad.edges");
-    sigdt(&["eval", p, "--gt", gt.to_str().unwrap(), "--edges", bad.to_str().unwrap()])
-        .error(&["99"]);
+    let run = sigdt(&["eval", p, "--gt", gt.to_str().unwrap(), "--edges", bad.to_str().unwrap()]);
+    run.usage_error();
+    assert!(run.stderr.contains("--edges") && run.stderr.contains("refers to point 99"), "{run}");
 }
 
 fn simple_svg() -> String {

@@ -7,8 +7,8 @@
 //! (2): clap checks it against `Method::ALL` before anything runs.
 //!
 //! `main.rs` holds the helpers; `results` checks outputs (formats, graphs, degenerate input,
-//! help), `errors` the error messages and exit statuses, `files` output-file safety and
-//! broken pipes.
+//! help), `formats` the input formats (WKT, GeoJSON, `.npy`, CSV tables, gzip), `errors` the
+//! error messages and exit statuses, `files` output-file safety and broken pipes.
 
 use std::fs;
 use std::io::{BufRead, BufReader, Write};
@@ -21,6 +21,7 @@ mod bench;
 mod determinism;
 mod errors;
 mod files;
+mod formats;
 mod limits;
 mod pictures;
 mod results;

@@ -1,0 +1,208 @@
+//! Points from a NumPy `.npy` file (format versions 1.0 to 3.0): an `(n, 2)` array of
+//! floats or integers, in C or Fortran order, little- or big-endian.
+//!
+//! Read dtypes: `f8`, `f4`, `i8`, `i4`, `i2`, `i1`, `u8`, `u4`, `u2`, `u1`. Anything else
+//! (objects, complex numbers, structured arrays) and any shape other than `(n, 2)` is
+//! refused, saying what was found and how to save what sigdt reads.
+//!
+//! # Complexity
+//! O(n); the data are read in one pass.
+
+use std::io::Read;
+
+use anyhow::{bail, Context, Result};
+use sigdt::Point;
+
+/// The magic bytes of a `.npy` file.
+pub const MAGIC: &[u8] = b"\x93NUMPY";
+
+/// The points of the `.npy` stream `reader`; see the module docs.
+pub fn read(mut reader: impl Read, name: &str, max_points: usize) -> Result<Vec<Point>> {
+    let mut preamble = [0u8; 8];
+    reader.read_exact(&mut preamble).with_context(|| format!("{name}: truncated .npy header"))?;
+    let header_len = match preamble[6] {
+        1 => {
+            let mut len = [0u8; 2];
+            reader
+                .read_exact(&mut len)
+                .with_context(|| format!("{name}: truncated .npy header"))?;
+            usize::from(u16::from_le_bytes(len))
+        }
+        2 | 3 => {
+            let mut len = [0u8; 4];
+            reader
+                .read_exact(&mut len)
+                .with_context(|| format!("{name}: truncated .npy header"))?;
+            u32::from_le_bytes(len) as usize
+        }
+        v => bail!("{name}: .npy format version {v} is not one sigdt reads (1 to 3)"),
+    };
+    if header_len > 1 << 20 {
+        bail!("{name}: .npy header of {header_len} bytes: not a .npy file?");
+    }
+    let mut header = vec![0u8; header_len];
+    reader.read_exact(&mut header).with_context(|| format!("{name}: truncated .npy header"))?;
+    let header = String::from_utf8_lossy(&header);
+    let descr = value_of(&header, "descr")
+        .with_context(|| format!("{name}: .npy header without 'descr'"))?;
+    let fortran = value_of(&header, "fortran_order") == Some("True");
+    let shape = value_of(&header, "shape")
+        .with_context(|| format!("{name}: .npy header without 'shape'"))?;
+    let dims: Vec<usize> = shape
+        .trim_matches(['(', ')'])
+        .split(',')
+        .map(str::trim)
+        .filter(|d| !d.is_empty())
+        .map(|d| d.parse::<usize>())
+        .collect::<Result<_, _>>()
+        .with_context(|| format!("{name}: .npy shape {shape} is not a tuple of sizes"))?;
+    let n = match dims.as_slice() {
+        [n, 2] => *n,
+        [0] => 0,
+        _ => bail!(
+            "{name}: the array has shape {shape}; sigdt reads (n, 2) arrays of x and y: save \
+             points[:, :2] (np.save(path, np.asarray(points)[:, :2]))"
+        ),
+    };
+    if n > max_points {
+        bail!("{name}: more than {max_points} points ({n}; raise --max-points to read more)");
+    }
+    let dtype = Dtype::parse(descr.trim_matches(['\'', '"'])).with_context(|| {
+        format!(
+            "{name}: .npy dtype {descr} is not a real number type sigdt reads (save as float64: \
+             np.save(path, points.astype(float)))"
+        )
+    })?;
+    let mut data = vec![0u8; n * 2 * dtype.size];
+    reader.read_exact(&mut data).with_context(|| {
+        format!("{name}: the .npy data end before the {n} x 2 values its header announces")
+    })?;
+    let values: Vec<f64> = data.chunks_exact(dtype.size).map(|b| dtype.value(b)).collect();
+    let points: Vec<Point> =
+        (0..n)
+            .map(|i| {
+                if fortran {
+                    [values[i], values[n + i]]
+                } else {
+                    [values[2 * i], values[2 * i + 1]]
+                }
+            })
+            .collect();
+    if let Some(i) = points.iter().position(|p| !p.iter().all(|v| v.is_finite())) {
+        bail!("{name}: row {i} is {:?}: every coordinate must be finite", points[i]);
+    }
+    Ok(points)
+}
+
+/// The value text of `key` in the header's Python dict literal: `'key': value`.
+fn value_of<'h>(header: &'h str, key: &str) -> Option<&'h str> {
+    let start = header.find(&format!("'{key}'"))? + key.len() + 2;
+    let rest = header[start..].trim_start().strip_prefix(':')?.trim_start();
+    let end = if rest.starts_with('(') {
+        rest.find(')')? + 1
+    } else {
+        rest.find([',', '}']).unwrap_or(rest.len())
+    };
+    Some(rest[..end].trim())
+}
+
+/// A numeric dtype: kind, size and byte order.
+struct Dtype {
+    kind: char,
+    size: usize,
+    big_endian: bool,
+}
+
+impl Dtype {
+    fn parse(descr: &str) -> Option<Dtype> {
+        let (order, rest) = descr.split_at(descr.find(|c: char| c.is_ascii_alphabetic())?);
+        let big_endian = match order {
+            "<" | "|" | "=" | "" => false,
+            ">" => true,
+            _ => return None,
+        };
+        let kind = rest.chars().next()?;
+        let size: usize = rest[1..].parse().ok()?;
+        let known = matches!((kind, size), ('f', 4 | 8) | ('i' | 'u', 1 | 2 | 4 | 8));
+        known.then_some(Dtype { kind, size, big_endian })
+    }
+
+    fn value(&self, bytes: &[u8]) -> f64 {
+        let mut b = [0u8; 8];
+        if self.big_endian {
+            b[..self.size].copy_from_slice(bytes);
+            b[..self.size].reverse();
+        } else {
+            b[..self.size].copy_from_slice(bytes);
+        }
+        let signed = |bits: u32| {
+            let raw = u64::from_le_bytes(b);
+            (((raw << (64 - bits)) as i64) >> (64 - bits)) as f64
+        };
+        match (self.kind, self.size) {
+            ('f', 8) => f64::from_le_bytes(b),
+            ('f', _) => f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]])),
+            ('i', size) => signed(8 * size as u32),
+            (_, _) => u64::from_le_bytes(b) as f64,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A version-1 `.npy` file of `values` with `descr`, `shape` and order.
+    fn npy(descr: &str, shape: &str, fortran: bool, values: &[u8]) -> Vec<u8> {
+        let dict = format!(
+            "{{'descr': '{descr}', 'fortran_order': {}, 'shape': {shape}, }}",
+            if fortran { "True" } else { "False" }
+        );
+        let mut header = dict.into_bytes();
+        while (10 + header.len() + 1) % 64 != 0 {
+            header.push(b' ');
+        }
+        header.push(b'\n');
+        let mut out = MAGIC.to_vec();
+        out.extend([1, 0]);
+        out.extend((header.len() as u16).to_le_bytes());
+        out.extend(header);
+        out.extend(values);
+        out
+    }
+
+    fn parse(bytes: &[u8]) -> Result<Vec<Point>> {
+        read(bytes, "t.npy", 1000)
+    }
+
+    #[test]
+    fn float_and_integer_arrays_in_either_order() {
+        let f8: Vec<u8> = [0.5f64, 1.0, 2.0, -3.0].iter().flat_map(|v| v.to_le_bytes()).collect();
+        let points = vec![[0.5, 1.0], [2.0, -3.0]];
+        assert_eq!(parse(&npy("<f8", "(2, 2)", false, &f8)).unwrap(), points);
+        let fortran = vec![[0.5, 2.0], [1.0, -3.0]];
+        assert_eq!(parse(&npy("<f8", "(2, 2)", true, &f8)).unwrap(), fortran);
+        let be: Vec<u8> = [0.5f32, 1.0, 2.0, -3.0].iter().flat_map(|v| v.to_be_bytes()).collect();
+        assert_eq!(parse(&npy(">f4", "(2, 2)", false, &be)).unwrap(), points);
+        let i2: Vec<u8> = [7i16, -8, 9, 10].iter().flat_map(|v| v.to_le_bytes()).collect();
+        assert_eq!(parse(&npy("<i2", "(2, 2)", false, &i2)).unwrap(), [[7.0, -8.0], [9.0, 10.0]]);
+        assert!(parse(&npy("<f8", "(0,)", false, &[])).unwrap().is_empty());
+    }
+
+    #[test]
+    fn other_arrays_are_refused_saying_why() {
+        let err = parse(&npy("<f8", "(2, 3)", false, &[0; 48])).unwrap_err().to_string();
+        assert!(err.contains("shape (2, 3)") && err.contains("points[:, :2]"), "{err}");
+        let err = parse(&npy("<c16", "(1, 2)", false, &[0; 32])).unwrap_err().to_string();
+        assert!(err.contains("dtype '<c16'"), "{err}");
+        let err = parse(&npy("<f8", "(2, 2)", false, &[0; 20])).unwrap_err().to_string();
+        assert!(err.contains("end before the 2 x 2 values"), "{err}");
+        let nan: Vec<u8> = [0.0, f64::NAN].iter().flat_map(|v| v.to_le_bytes()).collect();
+        assert!(parse(&npy("<f8", "(1, 2)", false, &nan))
+            .unwrap_err()
+            .to_string()
+            .contains("row 0"));
+        let many = read(&npy("<f8", "(2, 2)", false, &[0; 32])[..], "t.npy", 1).unwrap_err();
+        assert!(many.to_string().contains("more than 1 points"), "{many}");
+    }
+}
