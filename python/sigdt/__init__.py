@@ -18,6 +18,7 @@ from ._result import Reconstruction
 from ._trace import PHASES, Trace, trace
 from .errors import InternalError, InvalidInputError, ParseError, SigdtError, SigdtWarning
 from .plot import plot_steps
+from .shapely import from_shapely, to_shapely
 
 __all__ = [
     "GRAPH_KINDS",
@@ -32,6 +33,7 @@ __all__ = [
     "Trace",
     "__version__",
     "evaluate",
+    "from_shapely",
     "graph_epsilon",
     "graph_overlap",
     "plot_steps",
@@ -39,5 +41,6 @@ __all__ = [
     "read_points",
     "reconstruct",
     "reconstruct_many",
+    "to_shapely",
     "trace",
 ]

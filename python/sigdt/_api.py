@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 
 from . import _core
-from ._input import LEAF_ELIMINATION, _as_points, _check_method
+from ._input import LEAF_ELIMINATION, _as_points, _as_points_and_index, _check_method
 from ._result import Reconstruction
 from .errors import InvalidInputError, SigdtWarning
 
@@ -63,10 +63,12 @@ def reconstruct(
 
     Parameters
     ----------
-    points : array_like, shape (n, 2)
+    points : array_like, shape (n, 2), or shapely / GeoPandas points
         Anything numpy turns into an ``(n, 2)`` real float64 array (kept as
         ``rec.points``; the extension works on its own copy, so the result depends only on
-        the values at the call).
+        the values at the call); a shapely ``MultiPoint`` or a sequence of shapely
+        ``Point`` objects; or a GeoPandas ``GeoSeries`` / ``GeoDataFrame`` of points, whose
+        index is kept as ``rec.index`` so that results map back to rows.
     method : str, default "sig-connect2d"
         The reconstruction method (see ``sigdt.METHODS``). ``"sig-auto"`` keeps open
         curves open and nested curves separate: closed loops in ``loops``, open curves in
@@ -115,8 +117,9 @@ def reconstruct(
     [array([0, 1, 2, 3])]
     """
     _check_method(method)
-    array = _as_points(points)
-    rec = Reconstruction(array, _core.reconstruct(array, method, bool(leaf_elimination)))
+    array, index = _as_points_and_index(points)
+    fields = _core.reconstruct(array, method, bool(leaf_elimination))
+    rec = Reconstruction(array, fields, index)
     _warn_about([rec], many=False)
     return rec
 

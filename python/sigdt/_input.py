@@ -16,7 +16,63 @@ __all__ = ["LEAF_ELIMINATION"]
 LEAF_ELIMINATION = True
 
 
+def _geometry_points(points: Any) -> tuple[np.ndarray, Any] | None:
+    """The coordinates of a shapely or GeoPandas input and the GeoPandas index (``None`` for
+    shapely), or ``None`` when ``points`` is neither. Neither library is imported here: the
+    input's type says what it is."""
+    module = type(points).__module__ or ""
+    if module.startswith("geopandas"):
+        series = points.geometry if type(points).__name__ == "GeoDataFrame" else points
+        kinds = set(series.geom_type.dropna().unique())
+        if series.isna().any() or series.is_empty.any() or kinds - {"Point"}:
+            raise InvalidInputError(
+                f"a {type(points).__name__} of {sorted(kinds) or 'empty'} geometries"
+                + (" with missing or empty ones" if series.isna().any() else "")
+                + ": sigdt reads one point per row; for the vertices of other geometries "
+                "pass series.get_coordinates() (its index repeats each row's)"
+            )
+        coords = np.c_[series.x.to_numpy(dtype=np.float64), series.y.to_numpy(dtype=np.float64)]
+        return coords, series.index
+    if module.startswith("shapely"):
+        kind = getattr(points, "geom_type", type(points).__name__)
+        if kind not in ("MultiPoint", "Point"):
+            raise InvalidInputError(
+                f"a shapely {kind}: pass a MultiPoint, a sequence of Points, or the vertices "
+                "of a geometry with sigdt.from_shapely(geometry)"
+            )
+        return _shapely_coordinates(points), None
+    if isinstance(points, (list, tuple)) and points:
+        first = type(points[0]).__module__ or ""
+        if first.startswith("shapely"):
+            kinds = {getattr(p, "geom_type", type(p).__name__) for p in points}
+            if kinds != {"Point"}:
+                raise InvalidInputError(
+                    f"a sequence of shapely {sorted(kinds)}: sigdt reads a sequence of Points"
+                )
+            return _shapely_coordinates(points), None
+    return None
+
+
+def _shapely_coordinates(geometry: Any) -> np.ndarray:
+    import shapely
+
+    coords = shapely.get_coordinates(geometry)
+    return np.ascontiguousarray(coords, dtype=np.float64).reshape(-1, 2)
+
+
+def _as_points_and_index(points: Any) -> tuple[np.ndarray, Any]:
+    """:func:`_as_points`, and the index of a GeoPandas input (``None`` otherwise)."""
+    geometric = _geometry_points(points)
+    if geometric is not None:
+        coords, index = geometric
+        return _as_points(coords), index
+    return _as_points(points), None
+
+
 def _as_points(points: Any) -> np.ndarray:
+    geometric = _geometry_points(points)
+    if geometric is not None:
+        points = geometric[0]
     if np.ma.isMaskedArray(points) and np.ma.getmaskarray(points).any():
         raise InvalidInputError(
             "points is a masked array with masked values: drop them first "

@@ -84,12 +84,17 @@ class Reconstruction:
         ``(d, 2)`` int64 rows ``[duplicate, representative]``; duplicates get no edges.
     stats : dict
         Per-stage counts of the run.
+    index : pandas.Index or None
+        For a GeoSeries or GeoDataFrame input, its index: point ``i`` is row
+        ``index[i]``, so ``index[rec.loops[0]]`` are the rows of the first loop in order.
+        ``None`` for any other input.
     """
 
-    __slots__ = ("_fields", "_polygons", "points")
+    __slots__ = ("_fields", "_polygons", "index", "points")
 
-    def __init__(self, points: np.ndarray, fields: _Reconstruction) -> None:
+    def __init__(self, points: np.ndarray, fields: _Reconstruction, index: Any = None) -> None:
         self.points = points
+        self.index = index
         # The extension's dict as it is: what __eq__ compares and pickling stores.
         self._fields = fields
         self._polygons: list[tuple[int, list[int]]] | None = None
@@ -187,6 +192,25 @@ class Reconstruction:
 
         return to_geojson(self)
 
+    def to_wkt(self) -> str:
+        """The result as WKT (the geometry of :meth:`to_shapely`), without needing shapely;
+        coordinates read back exactly.
+
+        >>> import sigdt
+        >>> sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]]).to_wkt()
+        'POLYGON ((0.0 0.0, 1.0 0.0, 1.0 1.0, 0.0 1.0, 0.0 0.0))'
+        """
+        from .shapely import to_wkt
+
+        return to_wkt(self)
+
+    def to_svg(self, width: int = 400) -> str:
+        """A standalone SVG picture of the result, ``width`` pixels wide: loops filled, edges
+        and points, in the colours of ``sigdt render``."""
+        from .shapely import to_svg
+
+        return to_svg(self, width)
+
     def plot(self, ax: Any = None, **style: Any) -> Any:
         """Draw points, edges and filled loops with matplotlib; returns the axes.
 
@@ -216,4 +240,4 @@ class Reconstruction:
     __hash__ = None  # type: ignore[assignment]  # mutable arrays inside
 
     def __reduce__(self) -> tuple[Any, ...]:
-        return (Reconstruction, (self.points, self._fields))
+        return (Reconstruction, (self.points, self._fields, self.index))

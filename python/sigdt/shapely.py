@@ -1,4 +1,5 @@
-"""Shapely and GeoJSON views of a :class:`~sigdt.Reconstruction` (shapely imported lazily)."""
+"""Shapely, GeoJSON, WKT and SVG views of a :class:`~sigdt.Reconstruction` (shapely imported
+lazily; GeoJSON, WKT and SVG need only numpy)."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import numpy as np
 if TYPE_CHECKING:  # pragma: no cover
     from ._result import Reconstruction
 
-__all__ = ["from_shapely", "to_geojson", "to_shapely"]
+__all__ = ["from_shapely", "to_geojson", "to_shapely", "to_svg", "to_wkt"]
 
 
 def _rings(rec: Reconstruction) -> list[np.ndarray]:
@@ -17,12 +18,35 @@ def _rings(rec: Reconstruction) -> list[np.ndarray]:
 
 
 def to_shapely(rec: Reconstruction) -> Any:
-    """The loops as polygons and the open paths as lines. A loop inside another one (SIG-AUTO
-    returns nested curves, such as the two outlines of an ``O``) is a hole of it, and a loop
-    inside that hole is a new polygon again: :attr:`~sigdt.Reconstruction.polygons`, decided
-    with exact predicates. ``Polygon`` for one polygon, ``MultiPolygon`` for several,
-    ``LineString`` for one open path or an empty result, ``MultiLineString`` for several
-    paths, ``GeometryCollection`` for polygons and paths together."""
+    """The result as a shapely geometry: loops as polygons, open paths as lines.
+
+    A loop inside another one (SIG-AUTO returns nested curves, such as the two outlines of
+    an ``O``) is a hole of it, and a loop inside that hole is a new polygon again
+    (:attr:`~sigdt.Reconstruction.polygons`, decided with exact predicates).
+
+    Parameters
+    ----------
+    rec : Reconstruction
+        A result of :func:`sigdt.reconstruct`.
+
+    Returns
+    -------
+    shapely.Geometry
+        ``Polygon`` for one polygon, ``MultiPolygon`` for several, ``LineString`` for one
+        open path or an empty result, ``MultiLineString`` for several paths,
+        ``GeometryCollection`` for polygons and paths together.
+
+    Raises
+    ------
+    ImportError
+        shapely is not installed (the ``shapely`` extra).
+
+    Examples
+    --------
+    >>> import sigdt
+    >>> sigdt.to_shapely(sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]])).area
+    1.0
+    """
     import shapely
 
     rings = _rings(rec)
@@ -44,8 +68,34 @@ def to_shapely(rec: Reconstruction) -> Any:
 
 
 def from_shapely(geometry: Any) -> np.ndarray:
-    """The vertices of a shapely geometry as an ``(n, 2)`` float64 array (ring closing
-    points included once per ring), e.g. to reconstruct a polygon's outline from them."""
+    """The vertices of shapely geometries as an ``(n, 2)`` float64 array of points.
+
+    Use it to reconstruct from the vertices of lines or polygons; a ring's closing vertex
+    repeats its first, and sigdt treats it as a duplicate (no edges).
+
+    Parameters
+    ----------
+    geometry : shapely.Geometry or array_like of them
+        Any geometry or geometries; every vertex, in order.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(n, 2)`` float64 (z values dropped).
+
+    Raises
+    ------
+    ImportError
+        shapely is not installed (the ``shapely`` extra).
+
+    Examples
+    --------
+    >>> import shapely, sigdt
+    >>> sigdt.from_shapely(shapely.LineString([(0, 0), (1, 0), (1, 1)]))
+    array([[0., 0.],
+           [1., 0.],
+           [1., 1.]])
+    """
     import shapely
 
     return np.ascontiguousarray(shapely.get_coordinates(geometry), dtype=np.float64)
@@ -54,6 +104,93 @@ def from_shapely(geometry: Any) -> np.ndarray:
 def to_geojson(rec: Reconstruction) -> dict[str, Any]:
     """A GeoJSON ``Feature``: the geometry of :func:`to_shapely` (without needing shapely),
     with status and counts as properties."""
+    loops, paths = rec.loops, rec.paths
+    properties: dict[str, Any] = {
+        "status": rec.status,
+        "points": len(rec.points),
+        "edges": len(rec.edges),
+        "loops": len(loops),
+        "paths": len(paths),
+        "duplicates": len(rec.duplicates),
+    }
+    if len(rec.left_out):
+        properties["left_out"] = rec.left_out.tolist()
+        properties["left_out_reasons"] = list(rec.left_out_reasons)
+    return {"type": "Feature", "geometry": _geometry(rec), "properties": properties}
+
+
+def to_wkt(rec: Reconstruction) -> str:
+    """The geometry of :func:`to_shapely` as WKT, without needing shapely; coordinates are
+    written so that they read back exactly. An empty result is ``GEOMETRYCOLLECTION EMPTY``."""
+    return _wkt(_geometry(rec))
+
+
+def _wkt(geometry: dict[str, Any] | None) -> str:
+    def coords(line: list[list[float]]) -> str:
+        return "(" + ", ".join(f"{x!r} {y!r}" for x, y in line) + ")"
+
+    def rings(polygon: list[list[list[float]]]) -> str:
+        return "(" + ", ".join(coords(r) for r in polygon) + ")"
+
+    if geometry is None:
+        return "GEOMETRYCOLLECTION EMPTY"
+    kind, c = geometry["type"], geometry.get("coordinates")
+    if kind == "Polygon":
+        return "POLYGON " + rings(c)
+    if kind == "MultiPolygon":
+        return "MULTIPOLYGON (" + ", ".join(rings(p) for p in c) + ")"
+    if kind == "LineString":
+        return "LINESTRING " + coords(c)
+    if kind == "MultiLineString":
+        return "MULTILINESTRING (" + ", ".join(coords(line) for line in c) + ")"
+    parts = ", ".join(_wkt(g) for g in geometry["geometries"])
+    return "GEOMETRYCOLLECTION (" + parts + ")"
+
+
+def to_svg(rec: Reconstruction, width: int = 400) -> str:
+    """A standalone SVG picture ``width`` pixels wide: the loops filled (holes even-odd), the
+    edges and the points, y pointing up, in the colours of ``sigdt render``."""
+    if width < 16:
+        raise ValueError(f"width must be at least 16 pixels, got {width}")
+    pts, verts = np.asarray(rec.points), np.asarray(rec.vertices)
+    every = np.concatenate([pts.reshape(-1, 2), verts.reshape(-1, 2)])
+    pad = 8.0
+    if len(every):
+        lo, hi = every.min(axis=0), every.max(axis=0)
+    else:
+        lo, hi = np.zeros(2), np.ones(2)
+    span = float(max(hi[0] - lo[0], hi[1] - lo[1])) or 1.0
+    scale = (width - 2 * pad) / span
+    height = int(np.ceil((hi[1] - lo[1]) * scale + 2 * pad)) if len(every) else width
+
+    def xy(p: np.ndarray) -> str:
+        return f"{(p[0] - lo[0]) * scale + pad:.2f},{height - ((p[1] - lo[1]) * scale + pad):.2f}"
+
+    out = [
+        (
+            f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
+            f'viewBox="0 0 {width} {height}">'
+        ),
+        f"<title>{len(pts)} points, {len(rec.edges)} edges, {rec.status}</title>",
+        '<rect width="100%" height="100%" fill="#ffffff"/>',
+    ]
+    for shell, holes in rec.polygons:
+        d = " ".join(
+            "M " + " L ".join(xy(verts[i]) for i in rec.loops[k]) + " Z" for k in [shell, *holes]
+        )
+        out.append(f'<path fill="#dce8f4" fill-rule="evenodd" d="{d}"/>')
+    if len(rec.edges):
+        d = " ".join(f"M {xy(verts[i])} L {xy(verts[j])}" for i, j in rec.edges)
+        out.append(f'<path fill="none" stroke="#1a1a1a" stroke-width="1.2" d="{d}"/>')
+    for p in pts:
+        cx, cy = xy(p).split(",")
+        out.append(f'<circle cx="{cx}" cy="{cy}" r="1.6" fill="#1a1a1a"/>')
+    out.append("</svg>")
+    return "\n".join(out) + "\n"
+
+
+def _geometry(rec: Reconstruction) -> dict[str, Any] | None:
+    """The GeoJSON geometry of the result (``None`` when empty)."""
 
     def ring(idx: np.ndarray) -> list[list[float]]:
         coords = rec.vertices[idx].tolist()
@@ -80,15 +217,4 @@ def to_geojson(rec: Reconstruction) -> dict[str, Any]:
         geometry = {"type": "MultiLineString", "coordinates": lines}
     else:
         geometry = {"type": "GeometryCollection", "geometries": geometries}
-    properties: dict[str, Any] = {
-        "status": rec.status,
-        "points": len(rec.points),
-        "edges": len(rec.edges),
-        "loops": len(loops),
-        "paths": len(paths),
-        "duplicates": len(rec.duplicates),
-    }
-    if len(rec.left_out):
-        properties["left_out"] = rec.left_out.tolist()
-        properties["left_out_reasons"] = list(rec.left_out_reasons)
-    return {"type": "Feature", "geometry": geometry, "properties": properties}
+    return geometry

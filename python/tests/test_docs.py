@@ -36,6 +36,7 @@ PUBLIC_FUNCTIONS = [n for n in sigdt.__all__ if inspect.isfunction(getattr(sigdt
 def test_the_public_functions_are_the_expected_ones():
     assert sorted(PUBLIC_FUNCTIONS) == [
         "evaluate",
+        "from_shapely",
         "graph_epsilon",
         "graph_overlap",
         "plot_steps",
@@ -43,6 +44,7 @@ def test_the_public_functions_are_the_expected_ones():
         "read_points",
         "reconstruct",
         "reconstruct_many",
+        "to_shapely",
         "trace",
     ]
 

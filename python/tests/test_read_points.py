@@ -48,11 +48,14 @@ def test_read_points_parse_error_names_file_and_line(tmp_path, text, line, messa
         sigdt.read_points(path)
 
 
-def test_read_points_missing_file_is_os_error(tmp_path):
+def test_read_points_missing_file_is_file_not_found(tmp_path):
     missing = tmp_path / "missing.xy"
-    with pytest.raises(OSError, match=re.escape(str(missing))):
+    with pytest.raises(FileNotFoundError, match=re.escape(str(missing))) as caught:
         sigdt.read_points(missing)
-    with pytest.raises(OSError):
+    # As open() raises it: errno, the reason and the file name.
+    assert caught.value.errno == 2 and caught.value.filename == str(missing)
+    assert str(caught.value) == f"[Errno 2] No such file or directory: '{missing}'"
+    with pytest.raises(IsADirectoryError):
         sigdt.read_points(tmp_path)  # a directory
 
 

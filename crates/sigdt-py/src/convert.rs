@@ -34,7 +34,17 @@ pub fn points(array: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<Point>> {
 pub fn err(e: sigdt::Error) -> PyErr {
     match e {
         sigdt::Error::Parse { .. } => ParseError::new_err(e.to_string()),
-        sigdt::Error::Io { .. } => PyOSError::new_err(e.to_string()),
+        // The subclass Python code expects (FileNotFoundError, PermissionError, ...), with
+        // errno and the file name, as `open` raises it.
+        sigdt::Error::Io { path, source } => match source.raw_os_error() {
+            Some(errno) => {
+                let text = source.to_string();
+                let suffix = format!(" (os error {errno})");
+                let reason = text.strip_suffix(&suffix).unwrap_or(&text).to_string();
+                PyOSError::new_err((errno, reason, path))
+            }
+            None => PyOSError::new_err(format!("{path}: {source}")),
+        },
         sigdt::Error::InvalidOption(_) => PyValueError::new_err(e.to_string()),
         _ => InvalidInputError::new_err(e.to_string()),
     }
