@@ -214,6 +214,11 @@ class Reconstruction:
     def plot(self, ax: Any = None, **style: Any) -> Any:
         """Draw points, edges and filled loops with matplotlib; returns the axes.
 
+        ``style``: ``fill``, ``edge_color``, ``point_color``, ``linewidth``, ``markersize``,
+        ``max_points`` (markers drawn at most; denser sets are thinned), and any keyword of
+        matplotlib's ``LineCollection`` for the edges (see :func:`sigdt.plot.plot`). An
+        existing axes title is kept.
+
         Needs the optional dependency ``matplotlib`` (the ``plot`` extra, or
         ``pip install matplotlib``).
         """

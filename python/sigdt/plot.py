@@ -16,12 +16,34 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["plot", "plot_steps"]
 
 
-def plot(rec: Reconstruction, ax: Any = None, **style: Any) -> Any:
+#: The most points :func:`plot` draws as markers; denser sets are thinned evenly (the edges
+#: and fills are always drawn whole).
+MAX_POINT_MARKERS = 20_000
+
+#: Colours shared with ``sigdt render`` (crates/sigdt-lab/src/render/svg.rs).
+FILL, INK = "#dce8f4", "#1a1a1a"
+
+
+def plot(
+    rec: Reconstruction,
+    ax: Any = None,
+    *,
+    fill: Any = FILL,
+    edge_color: Any = INK,
+    point_color: Any = INK,
+    linewidth: float = 1.0,
+    markersize: float = 2.5,
+    max_points: int = MAX_POINT_MARKERS,
+    **edge_kw: Any,
+) -> Any:
     """Draw the filled loops (a loop nested in another is a hole of it), the edges (open
     paths included) and the points; returns the axes.
 
-    ``style`` may override ``fill``, ``edge_color``, ``point_color``, ``linewidth`` and
-    ``markersize``.
+    Colours are those of ``sigdt render``. Other keyword arguments go to the edges'
+    ``LineCollection`` (``alpha``, ``linestyle``, ``label``, ...); ``fill=None`` leaves the
+    loops unfilled, ``max_points=0`` leaves the points out. Above ``max_points`` points
+    only every k-th point is drawn as a marker, so a million points plot in seconds. The
+    axes' title is set only when it has none.
     """
     import matplotlib.pyplot as plt
     from matplotlib.collections import LineCollection
@@ -30,39 +52,45 @@ def plot(rec: Reconstruction, ax: Any = None, **style: Any) -> Any:
 
     if ax is None:
         _, ax = plt.subplots()
-    pts = rec.points
+    pts = np.asarray(rec.points)
     rings = [rec.vertices[loop] for loop in rec.loops]
-    for shell, holes in rec.polygons:
-        # Holes clockwise against the counter-clockwise shell: a hole under either fill rule.
-        parts = [rings[shell]] + [rings[h][::-1] for h in holes]
-        vertices = np.concatenate([np.r_[r, r[:1]] for r in parts])
-        codes = np.concatenate(
-            [[Path.MOVETO] + [Path.LINETO] * (len(r) - 1) + [Path.CLOSEPOLY] for r in parts]
-        )
-        patch = PathPatch(Path(vertices, codes), color=style.get("fill", "#dbe9f6"), zorder=0)
-        ax.add_patch(patch)
-    if len(rec.edges):
-        segments = rec.vertices[rec.edges]
-        ax.add_collection(
-            LineCollection(
-                segments,
-                colors=style.get("edge_color", "#1f4e79"),
-                linewidths=style.get("linewidth", 1.0),
-                zorder=1,
+    if fill is not None:
+        for shell, holes in rec.polygons:
+            # Holes clockwise against the counter-clockwise shell: a hole under either rule.
+            parts = [rings[shell]] + [rings[h][::-1] for h in holes]
+            vertices = np.concatenate([np.r_[r, r[:1]] for r in parts])
+            codes = np.concatenate(
+                [[Path.MOVETO] + [Path.LINETO] * (len(r) - 1) + [Path.CLOSEPOLY] for r in parts]
             )
-        )
-    if len(pts):
-        ax.plot(
-            *np.asarray(pts).T,
-            "o",
-            color=style.get("point_color", "#c0392b"),
-            markersize=style.get("markersize", 2.5),
-            zorder=2,
-        )
+            # add_artist, not add_patch: add_patch walks the path segment by segment to
+            # update the data limits (20 s at 10^6 vertices); the edges set them below.
+            ax.add_artist(PathPatch(Path(vertices, codes), color=fill, linewidth=0, zorder=0))
+    if len(rec.edges):
+        style = {"colors": edge_color, "linewidths": linewidth, "zorder": 1, **edge_kw}
+        ax.add_collection(LineCollection(_polylines(rec), **style))
+        ax.update_datalim(rec.vertices[np.unique(rec.edges)])
+    if len(pts) and max_points > 0:
+        step = -(-len(pts) // max_points)  # ceil: at most max_points markers
+        shown = pts[::step]
+        ax.plot(*shown.T, "o", color=point_color, markersize=markersize, zorder=2)
     ax.set_aspect("equal")
     ax.autoscale_view()
-    ax.set_title(f"{len(pts)} points, {len(rec.edges)} edges, {rec.status}")
+    if not ax.get_title():
+        ax.set_title(f"{len(pts)} points, {len(rec.edges)} edges, {rec.status}")
     return ax
+
+
+def _polylines(rec: Reconstruction) -> list[np.ndarray]:
+    """The edges as few polylines: each loop closed, each path, then every edge on neither
+    as a segment of its own (matplotlib makes one path per polyline: a million separate
+    segments took 10 s)."""
+    verts = rec.vertices
+    chains = [np.r_[loop, loop[:1]] for loop in rec.loops] + list(rec.paths)
+    n = len(verts)
+    keys = np.sort(rec.edges, axis=1) @ np.array([n, 1])
+    drawn = [np.sort(np.c_[c[:-1], c[1:]], axis=1) @ np.array([n, 1]) for c in chains if len(c) > 1]
+    rest = rec.edges[~np.isin(keys, np.concatenate(drawn))] if drawn else rec.edges
+    return [verts[c] for c in chains if len(c) > 1] + list(verts[rest])
 
 
 def plot_steps(
