@@ -70,7 +70,7 @@ wheel: $(VENV)/.installed
 ## and the CLI tests against its `sigdt` script (`--workspace`: the test binary that
 ## rust-test built, not a rebuild with other features).
 WHEEL_VENV := $(abspath $(TARGET_DIR))/wheel-venv
-WHEEL_DEPS := $(shell grep -E '^(pytest|numpy|shapely|geopandas|matplotlib|hypothesis)=' requirements-dev.txt)
+WHEEL_DEPS := $(shell grep -E '^(pytest|numpy|shapely|geopandas|matplotlib|hypothesis|mypy|types-shapely)=' requirements-dev.txt)
 wheel-test: wheel
 	rm -rf $(WHEEL_VENV)
 	$(PYTHON) -m venv $(WHEEL_VENV)

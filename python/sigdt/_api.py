@@ -8,11 +8,10 @@ import warnings
 from collections.abc import Iterable
 from typing import Any
 
-import numpy as np
-
 from . import _core
 from ._input import LEAF_ELIMINATION, _as_points, _as_points_and_index, _check_method
-from ._result import Reconstruction
+from ._result import Coordinates, Indices, Reconstruction
+from ._types import Method
 from .errors import InvalidInputError, SigdtWarning
 
 
@@ -56,7 +55,7 @@ __all__ = ["proximity_graph", "read_points", "reconstruct", "reconstruct_many"]
 def reconstruct(
     points: Any,
     *,
-    method: str = "sig-connect2d",
+    method: Method = "sig-connect2d",
     leaf_elimination: bool = LEAF_ELIMINATION,
 ) -> Reconstruction:
     """Reconstruct the closed curve(s) through a set of 2D points.
@@ -125,10 +124,10 @@ def reconstruct(
 
 
 def reconstruct_many(
-    point_sets: Iterable[Any],
+    point_sets: Iterable[object],
     *,
     n_jobs: int | None = None,
-    method: str = "sig-connect2d",
+    method: Method = "sig-connect2d",
     leaf_elimination: bool = LEAF_ELIMINATION,
 ) -> list[Reconstruction]:
     """Reconstruct many point sets in parallel (threads in Rust, the GIL released).
@@ -184,7 +183,7 @@ def reconstruct_many(
     return results
 
 
-def proximity_graph(points: Any, kind: str = "sigdt", k: int | None = None) -> np.ndarray:
+def proximity_graph(points: Any, kind: str = "sigdt", k: int | None = None) -> Indices:
     """The edges of a proximity graph of the points.
 
     Parameters
@@ -226,7 +225,7 @@ def proximity_graph(points: Any, kind: str = "sigdt", k: int | None = None) -> n
     return _core.proximity_graph(_as_points(points), kind, k)
 
 
-def read_points(path: str | os.PathLike[str]) -> np.ndarray:
+def read_points(path: str | os.PathLike[str]) -> Coordinates:
     """Read a point file in any format the command line reads.
 
     Plain text with two numbers a line separated by spaces, tabs or a comma (``.xy``,

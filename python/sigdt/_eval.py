@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
 from . import _core
 from ._input import _as_points
+from ._types import Evaluation, GraphOverlap
 
 __all__ = ["evaluate", "graph_epsilon", "graph_overlap"]
 
@@ -23,7 +24,7 @@ def _as_edges(edges: Any, what: str) -> np.ndarray:
     return np.ascontiguousarray(array, dtype=np.int64)
 
 
-def evaluate(points: Any, edges: Any, gt: Any) -> dict[str, Any]:
+def evaluate(points: Any, edges: Any, gt: Any) -> Evaluation:
     """Score a reconstruction against ground truth.
 
     Parameters
@@ -61,7 +62,7 @@ def evaluate(points: Any, edges: Any, gt: Any) -> dict[str, Any]:
     (False, 1, 0)
     """
     array = _as_points(points)
-    return _core.evaluate(array, _as_edges(edges, "edges"), _as_edges(gt, "gt"))
+    return cast(Evaluation, _core.evaluate(array, _as_edges(edges, "edges"), _as_edges(gt, "gt")))
 
 
 def graph_epsilon(points: Any, gt: Any) -> float:
@@ -99,7 +100,7 @@ def graph_epsilon(points: Any, gt: Any) -> float:
     return _core.graph_epsilon(_as_points(points), _as_edges(gt, "gt"))
 
 
-def graph_overlap(points: Any, gt: Any) -> dict[str, Any]:
+def graph_overlap(points: Any, gt: Any) -> GraphOverlap:
     """How well proximity graphs of the points contain the ground truth (paper §5).
 
     Parameters
@@ -130,4 +131,4 @@ def graph_overlap(points: Any, gt: Any) -> dict[str, Any]:
     >>> o["contains_gt_sigdt"], o["gt_in_knn2"]
     (True, 1.0)
     """
-    return _core.graph_overlap(_as_points(points), _as_edges(gt, "gt"))
+    return cast(GraphOverlap, _core.graph_overlap(_as_points(points), _as_edges(gt, "gt")))

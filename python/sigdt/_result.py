@@ -2,14 +2,32 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Union, cast
 
 import numpy as np
+import numpy.typing as npt
 
 from . import _core
+from ._types import GeoJsonFeature, LeftOutReason, Status, VerticesKind
 
 if TYPE_CHECKING:  # pragma: no cover
+    import shapely
+    from matplotlib.axes import Axes
+
     from ._core import _Reconstruction
+
+    #: What :meth:`Reconstruction.to_shapely` returns.
+    ShapelyResult = Union[
+        shapely.Polygon,
+        shapely.MultiPolygon,
+        shapely.LineString,
+        shapely.MultiLineString,
+        shapely.GeometryCollection,
+    ]
+
+#: int64 index arrays and float64 coordinate arrays.
+Indices = npt.NDArray[np.int64]
+Coordinates = npt.NDArray[np.float64]
 
 __all__ = ["Reconstruction"]
 
@@ -28,7 +46,7 @@ STATUSES = (
 )
 
 
-def _split(flat: np.ndarray, offsets: np.ndarray) -> list[np.ndarray]:
+def _split(flat: Indices, offsets: Indices) -> list[Indices]:
     return [flat[offsets[k] : offsets[k + 1]] for k in range(len(offsets) - 1)]
 
 
@@ -92,7 +110,7 @@ class Reconstruction:
 
     __slots__ = ("_fields", "_polygons", "index", "points")
 
-    def __init__(self, points: np.ndarray, fields: _Reconstruction, index: Any = None) -> None:
+    def __init__(self, points: Coordinates, fields: _Reconstruction, index: Any = None) -> None:
         self.points = points
         self.index = index
         # The extension's dict as it is: what __eq__ compares and pickling stores.
@@ -100,40 +118,40 @@ class Reconstruction:
         self._polygons: list[tuple[int, list[int]]] | None = None
 
     @property
-    def edges(self) -> np.ndarray:
+    def edges(self) -> Indices:
         return self._fields["edges"]
 
     @property
-    def loops(self) -> list[np.ndarray]:
+    def loops(self) -> list[Indices]:
         return _split(self._fields["loop_vertices"], self._fields["loop_offsets"])
 
     @property
-    def paths(self) -> list[np.ndarray]:
+    def paths(self) -> list[Indices]:
         return _split(self._fields["path_vertices"], self._fields["path_offsets"])
 
     @property
-    def status(self) -> str:
-        return self._fields["status"]
+    def status(self) -> Status:
+        return cast(Status, self._fields["status"])
 
     @property
-    def vertices(self) -> np.ndarray:
+    def vertices(self) -> Coordinates:
         positions = self._fields["positions"]
         return self.points if positions is None else positions
 
     @property
-    def vertices_kind(self) -> str:
-        return self._fields["vertices"]
+    def vertices_kind(self) -> VerticesKind:
+        return cast(VerticesKind, self._fields["vertices"])
 
     @property
-    def left_out(self) -> np.ndarray:
+    def left_out(self) -> Indices:
         return self._fields["left_out"]
 
     @property
-    def left_out_reasons(self) -> list[str]:
-        return self._fields["left_out_reasons"]
+    def left_out_reasons(self) -> list[LeftOutReason]:
+        return cast("list[LeftOutReason]", self._fields["left_out_reasons"])
 
     @property
-    def duplicates(self) -> np.ndarray:
+    def duplicates(self) -> Indices:
         return self._fields["duplicates"]
 
     @property
@@ -174,7 +192,7 @@ class Reconstruction:
             )
         return self._polygons
 
-    def to_shapely(self) -> Any:
+    def to_shapely(self) -> ShapelyResult:
         """The result as a shapely geometry: ``Polygon`` (one loop), ``MultiPolygon``
         (several), ``LineString`` (one path, or empty), ``MultiLineString`` (several).
 
@@ -185,7 +203,7 @@ class Reconstruction:
 
         return to_shapely(self)
 
-    def to_geojson(self) -> dict[str, Any]:
+    def to_geojson(self) -> GeoJsonFeature:
         """The result as a GeoJSON ``Feature`` (a JSON-serialisable dict) with the status
         and counts as properties."""
         from .shapely import to_geojson
@@ -211,7 +229,7 @@ class Reconstruction:
 
         return to_svg(self, width)
 
-    def plot(self, ax: Any = None, **style: Any) -> Any:
+    def plot(self, ax: Axes | None = None, **style: Any) -> Axes:
         """Draw points, edges and filled loops with matplotlib; returns the axes.
 
         ``style``: ``fill``, ``edge_color``, ``point_color``, ``linewidth``, ``markersize``,

@@ -10,6 +10,7 @@ import numpy as np
 from . import _core
 from ._core import PHASES  # the names of the codes in Trace.step_phase (Rust's Phase::ALL)
 from ._input import LEAF_ELIMINATION, _as_points, _check_method
+from ._types import Method
 
 __all__ = ["PHASES", "Trace", "trace"]
 
@@ -17,7 +18,7 @@ __all__ = ["PHASES", "Trace", "trace"]
 def trace(
     points: Any,
     *,
-    method: str = "sig-connect2d",
+    method: Method = "sig-connect2d",
     leaf_elimination: bool = LEAF_ELIMINATION,
 ) -> Trace | None:
     """Record every step of inflating and sculpting, to replay or draw the run.

@@ -8,8 +8,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ._trace import trace
+from ._types import Method
 
 if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
     from ._result import Reconstruction
     from ._trace import Trace
 
@@ -35,7 +39,7 @@ def plot(
     markersize: float = 2.5,
     max_points: int = MAX_POINT_MARKERS,
     **edge_kw: Any,
-) -> Any:
+) -> Axes:
     """Draw the filled loops (a loop nested in another is a hole of it), the edges (open
     paths included) and the points; returns the axes.
 
@@ -97,10 +101,10 @@ def plot_steps(
     points: Any,
     *,
     steps: Any = None,
-    method: str = "sig-connect2d",
+    method: Method = "sig-connect2d",
     ncols: int = 4,
     axes: Any = None,
-) -> Any:
+) -> Figure:
     """Draw inflating and sculpting step by step, one panel per chosen step.
 
     Each panel shows the Delaunay triangles (faint), the interior triangles (filled), the

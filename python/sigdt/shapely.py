@@ -8,7 +8,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ._result import Reconstruction
+    from ._result import Coordinates, Reconstruction, ShapelyResult
+    from ._types import GeoJsonFeature
 
 __all__ = ["from_shapely", "to_geojson", "to_shapely", "to_svg", "to_wkt"]
 
@@ -17,7 +18,7 @@ def _rings(rec: Reconstruction) -> list[np.ndarray]:
     return [rec.vertices[loop] for loop in rec.loops]
 
 
-def to_shapely(rec: Reconstruction) -> Any:
+def to_shapely(rec: Reconstruction) -> ShapelyResult:
     """The result as a shapely geometry: loops as polygons, open paths as lines.
 
     A loop inside another one (SIG-AUTO returns nested curves, such as the two outlines of
@@ -67,7 +68,7 @@ def to_shapely(rec: Reconstruction) -> Any:
     return shapely.GeometryCollection(polygons + [shapely.LineString(line) for line in lines])
 
 
-def from_shapely(geometry: Any) -> np.ndarray:
+def from_shapely(geometry: object) -> Coordinates:
     """The vertices of shapely geometries as an ``(n, 2)`` float64 array of points.
 
     Use it to reconstruct from the vertices of lines or polygons; a ring's closing vertex
@@ -101,7 +102,7 @@ def from_shapely(geometry: Any) -> np.ndarray:
     return np.ascontiguousarray(shapely.get_coordinates(geometry), dtype=np.float64)
 
 
-def to_geojson(rec: Reconstruction) -> dict[str, Any]:
+def to_geojson(rec: Reconstruction) -> GeoJsonFeature:
     """A GeoJSON ``Feature``: the geometry of :func:`to_shapely` (without needing shapely),
     with status and counts as properties."""
     loops, paths = rec.loops, rec.paths

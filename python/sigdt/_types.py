@@ -1,0 +1,97 @@
+"""The types of sigdt's values, for type checkers: method, status and reason names as
+``Literal`` types, and the dicts that :func:`sigdt.evaluate`, :func:`sigdt.graph_overlap`
+and :meth:`sigdt.Reconstruction.to_geojson` return as ``TypedDict`` types. A test checks
+the literals against the names the extension defines."""
+
+from __future__ import annotations
+
+from typing import Literal, TypedDict
+
+__all__ = [
+    "Evaluation",
+    "GeoJsonFeature",
+    "GraphOverlap",
+    "LeftOutReason",
+    "Method",
+    "Status",
+    "VerticesKind",
+]
+
+#: A reconstruction method (``sigdt.METHODS``).
+Method = Literal[
+    "sig-connect2d",
+    "sig-auto",
+    "connect2d",
+    "crust",
+    "nn-crust",
+    "hnn-crust",
+    "crawl",
+    "discur",
+    "fit-connect",
+    "stretch-denoise",
+    "peel",
+    "emst",
+    "optimal-transport",
+]
+
+#: What a result is (:attr:`sigdt.Reconstruction.status`).
+Status = Literal[
+    "polygon",
+    "polygons",
+    "sculpting-stuck",
+    "curves",
+    "network",
+    "noisy",
+    "crossing",
+    "unfinished",
+    "collinear",
+    "too-few-points",
+]
+
+#: What a result's vertices are (:attr:`sigdt.Reconstruction.vertices_kind`).
+VerticesKind = Literal["input", "moved", "new"]
+
+#: Why a point was left out (:attr:`sigdt.Reconstruction.left_out_reasons`).
+LeftOutReason = Literal["inside", "outlier", "eliminated", "non-conforming", "unresolved"]
+
+
+class Evaluation(TypedDict):
+    """What :func:`sigdt.evaluate` returns."""
+
+    exact: bool
+    missing: int
+    extra: int
+    rmse: float | None
+    rmse_to_gt: float | None
+    hausdorff: float | None
+    area_difference: float
+    area_difference_normalised: float | None
+
+
+class GraphOverlap(TypedDict):
+    """What :func:`sigdt.graph_overlap` returns: shares of edges, and whether each graph
+    contains the whole ground truth."""
+
+    sig_in_dt: float
+    dt_in_sig: float
+    sigdt_in_gt: float
+    gt_in_sigdt: float
+    gt_in_sigdt2: float
+    gt_in_bc0: float
+    gt_in_knn2: float
+    gt_in_knn3: float
+    gt_in_knn4: float
+    contains_gt_sigdt: bool
+    contains_gt_sigdt2: bool
+    contains_gt_bc0: bool
+    contains_gt_knn2: bool
+    contains_gt_knn3: bool
+    contains_gt_knn4: bool
+
+
+class GeoJsonFeature(TypedDict):
+    """What :meth:`sigdt.Reconstruction.to_geojson` returns: a GeoJSON ``Feature``."""
+
+    type: Literal["Feature"]
+    geometry: dict[str, object] | None
+    properties: dict[str, str | int | list[int] | list[str]]
