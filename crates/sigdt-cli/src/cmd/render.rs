@@ -9,6 +9,7 @@ use sigdt::{GraphKind, Method, Options, Triangulation};
 use sigdt_lab::render::{render_svg, Layers, RenderOptions};
 
 use crate::input::{ground_truth, picture_title, Input};
+use crate::messages::UsageError;
 use crate::output::Output;
 
 /// A layer of `sigdt render`.
@@ -65,7 +66,21 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     let png = match args.output.extension().and_then(|e| e.to_str()) {
         Some(e) if e.eq_ignore_ascii_case("png") => true,
         Some(e) if e.eq_ignore_ascii_case("svg") => false,
-        _ => bail!("{}: the picture must be a .svg or .png file", args.output.display()),
+        other => {
+            let why = match other.map(str::to_ascii_lowercase).as_deref() {
+                Some("jpg" | "jpeg") => " (JPEG is not written: its compression blurs thin lines)",
+                _ => "",
+            };
+            return Err(UsageError {
+                command: "render",
+                kind: clap::error::ErrorKind::InvalidValue,
+                message: format!(
+                    "{}: the picture must be a .svg or .png file{why}",
+                    args.output.display()
+                ),
+            }
+            .into());
+        }
     };
     let output = Output::new(Some(&args.output), &args.input)?;
     let points = input.points(&args.input)?;

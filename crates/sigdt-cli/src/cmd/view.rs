@@ -3,11 +3,12 @@
 
 use std::path::PathBuf;
 
-use anyhow::{bail, Result};
+use anyhow::Result;
 use clap::Args;
 use sigdt::{GraphKind, Method, Options, Triangulation};
 
 use crate::input::{ground_truth, picture_title, Input};
+use crate::messages::UsageError;
 use crate::output::Output;
 use crate::view::{view_json, viewer_html, ViewData};
 
@@ -34,8 +35,17 @@ pub struct ViewArgs {
 
 /// `sigdt view`.
 pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
-    if !args.output.extension().is_some_and(|e| e.eq_ignore_ascii_case("html")) {
-        bail!("{}: the viewer is an .html file", args.output.display());
+    let html = ["html", "htm"];
+    if !args.output.extension().is_some_and(|e| html.iter().any(|h| e.eq_ignore_ascii_case(h))) {
+        return Err(UsageError {
+            command: "view",
+            kind: clap::error::ErrorKind::InvalidValue,
+            message: format!(
+                "{}: the viewer is an HTML file: name it .html or .htm",
+                args.output.display()
+            ),
+        }
+        .into());
     }
     let output = Output::new(Some(&args.output), &args.input)?;
     let points = input.points(&args.input)?;

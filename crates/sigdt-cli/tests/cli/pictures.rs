@@ -29,7 +29,6 @@ fn render_writes_svg_and_png_with_the_layers_asked_for() {
 fn render_and_view_errors_are_clear() {
     let dir = tempdir();
     let xy = bundled("glyph_sigma.xy");
-    sigdt_in(dir.path(), &["render", &xy, "-o", "x.jpg"], None).error(&[".svg or .png"]);
     sigdt_in(dir.path(), &["render", &xy, "--layers", "gt", "-o", "x.svg"], None)
         .error(&["needs --gt"]);
     sigdt_in(
@@ -42,7 +41,15 @@ fn render_and_view_errors_are_clear() {
     let run = sigdt_in(dir.path(), &["view", &xy, "--gt", "bad.gt", "-o", "v.html"], None);
     run.usage_error();
     assert!(run.stderr.contains("--gt bad.gt:2:") && run.stderr.contains("9999"), "{run}");
-    sigdt_in(dir.path(), &["view", &xy, "-o", "v.txt"], None).error(&[".html"]);
+    let run = sigdt_in(dir.path(), &["view", &xy, "-o", "v.txt"], None);
+    run.usage_error();
+    assert!(run.stderr.contains(".html or .htm"), "{run}");
+    sigdt_in(dir.path(), &["view", &xy, "-o", "v.htm"], None).expect(0);
+    let run = sigdt_in(dir.path(), &["render", &xy, "-o", "p.jpg"], None);
+    run.usage_error();
+    assert!(run.stderr.contains(".svg or .png") && run.stderr.contains("JPEG"), "{run}");
+    assert!(!dir.path().join("p.jpg").exists());
+    std::fs::remove_file(dir.path().join("v.htm")).unwrap();
     sigdt_in(dir.path(), &["render", &xy, "--layers", "nope", "-o", "x.svg"], None).usage_error();
     assert!(!dir.path().join("x.svg").exists() && !dir.path().join("v.html").exists());
 }
