@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold wheel wheel-test man
+.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold wheel wheel-test man api-docs
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -45,7 +45,7 @@ demo: build
 ## test: formatting, lints, every Rust test (unit, property, golden, CLI), docs, the Python
 ## package's tests (binding contract, properties, docs, Dask, CLI parity), and the same
 ## Python and CLI tests against the installed wheel (wheel-test).
-test: lint rust-test doc py-test wheel-test
+test: lint rust-test doc py-test api-docs wheel-test
 
 $(VENV)/.installed: requirements-dev.txt
 	$(PYTHON) -m venv $(VENV)
@@ -55,6 +55,13 @@ $(VENV)/.installed: requirements-dev.txt
 ## py-build: build the extension in release mode into .venv (maturin develop).
 py-build: $(VENV)/.installed
 	VIRTUAL_ENV=$(abspath $(VENV)) $(VENV)/bin/maturin develop --release --locked --quiet
+
+## api-docs: the Python API reference from the docstrings (pdoc, numpydoc style) in
+## target/api-docs; any warning fails it (make test runs it).
+api-docs: py-build
+	rm -rf $(TARGET_DIR)/api-docs
+	$(VPY) -W error -m pdoc sigdt sigdt.plot sigdt.shapely sigdt.errors sigdt.baselines \
+	  --docformat numpy -o $(TARGET_DIR)/api-docs
 
 ## wheel: the Python package as a stripped abi3 wheel in target/wheels (maturin; tagged
 ## manylinux by maturin's own symbol check, so it installs without a Rust toolchain).

@@ -24,6 +24,11 @@ if TYPE_CHECKING:  # pragma: no cover
         shapely.MultiLineString,
         shapely.GeometryCollection,
     ]
+else:
+    # Named at run time too, for documentation tools that evaluate annotations (the
+    # extension's result dict; shapely and matplotlib are optional, imported when used).
+    _Reconstruction = dict
+    ShapelyResult = Axes = Any
 
 #: int64 index arrays and float64 coordinate arrays.
 Indices = npt.NDArray[np.int64]
