@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Union, cast
+from typing import TYPE_CHECKING, Any, Union, cast, get_args
 
 import numpy as np
 import numpy.typing as npt
@@ -37,18 +37,7 @@ Coordinates = npt.NDArray[np.float64]
 __all__ = ["Reconstruction"]
 
 #: Names of :attr:`Reconstruction.status`, in the order the core defines them.
-STATUSES = (
-    "polygon",
-    "polygons",
-    "sculpting-stuck",
-    "curves",
-    "network",
-    "noisy",
-    "crossing",
-    "unfinished",
-    "collinear",
-    "too-few-points",
-)
+STATUSES: tuple[str, ...] = get_args(Status)
 
 
 def _split(flat: Indices, offsets: Indices) -> list[Indices]:

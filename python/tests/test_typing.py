@@ -68,7 +68,6 @@ methods: list[str] = sigdt.METHODS
 
 def test_the_literals_are_the_extensions_names() -> None:
     assert typing.get_args(_types.Method) == tuple(sigdt.METHODS)
-    assert typing.get_args(_types.Status) == sigdt._result.STATUSES
     rec = sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]])
     assert set(_types.Evaluation.__annotations__) == set(
         sigdt.evaluate(rec.points, rec.edges, rec.edges)
