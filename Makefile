@@ -73,17 +73,18 @@ wheel: $(VENV)/.installed
 
 ## wheel-test: installs the wheel into a fresh virtualenv and, with no cargo on PATH, runs
 ## the Python tests against it (all but the browser and Dask tests, which test the same
-## package code; test_installed.py checks that `python -m sigdt` is the same command line)
-## and the CLI tests against its `sigdt` script (`--workspace`: the test binary that
+## package code; the CLI parity test compares the wheel with the cargo-built binary, and
+## test_installed.py checks the wheel's `sigdt` script and `python -m sigdt`) and the CLI
+## tests against its `sigdt` script (`--workspace`: the test binary that
 ## rust-test built, not a rebuild with other features).
 WHEEL_VENV := $(abspath $(TARGET_DIR))/wheel-venv
 WHEEL_DEPS := $(shell grep -E '^(pytest|numpy|shapely|geopandas|matplotlib|hypothesis|mypy|types-shapely)=' requirements-dev.txt)
-wheel-test: wheel
+wheel-test: wheel build
 	rm -rf $(WHEEL_VENV)
 	$(PYTHON) -m venv $(WHEEL_VENV)
 	$(WHEEL_VENV)/bin/pip install --quiet --disable-pip-version-check $(WHEELS)/sigdt-*.whl \
 	  $(WHEEL_DEPS)
-	cd $(WHEEL_VENV) && env PATH=$(WHEEL_VENV)/bin:/usr/bin:/bin SIGDT_CLI=$(WHEEL_VENV)/bin/sigdt \
+	cd $(WHEEL_VENV) && env PATH=$(WHEEL_VENV)/bin:/usr/bin:/bin \
 	  SIGDT_WHEEL_TEST=1 bin/python -m pytest -q -p no:cacheprovider -c $(abspath pyproject.toml) \
 	  --rootdir $(abspath .) $(abspath python/tests) --ignore $(abspath python/tests/test_viewer.py) \
 	  --ignore $(abspath python/tests/test_dask.py)
