@@ -18,34 +18,14 @@
 use std::io::Read;
 
 use anyhow::{bail, Result};
+use sigdt::io::{wkt_geometry, WKT_GEOMETRIES};
 use sigdt::Point;
 
-/// The geometry keywords.
-const KEYWORDS: [&str; 7] = [
-    "GEOMETRYCOLLECTION",
-    "MULTIPOLYGON",
-    "MULTILINESTRING",
-    "MULTIPOINT",
-    "POLYGON",
-    "LINESTRING",
-    "POINT",
-];
-
-/// Whether `line` starts like WKT: an SRID prefix, or a geometry keyword followed by a
-/// dimension, `(` or `EMPTY` (so that a header such as `point x` is not taken for WKT).
+/// Whether `line` starts like WKT: an EWKT `SRID=` prefix, or a geometry as the kernel's
+/// reader recognises it ([`sigdt::io::wkt_geometry`]).
 pub fn starts_wkt(line: &str) -> bool {
-    let upper = line.trim_start().to_ascii_uppercase();
-    if upper.starts_with("SRID=") {
-        return true;
-    }
-    let word: String = upper.chars().take_while(char::is_ascii_alphabetic).collect();
-    if !KEYWORDS.contains(&word.as_str()) {
-        return false;
-    }
-    let rest = upper[word.len()..].trim_start();
-    let rest = ["ZM", "Z", "M"].iter().find_map(|d| rest.strip_prefix(d)).unwrap_or(rest);
-    let rest = rest.trim_start();
-    rest.starts_with('(') || rest.starts_with("EMPTY")
+    let line = line.trim_start();
+    line.get(..5).is_some_and(|p| p.eq_ignore_ascii_case("SRID=")) || wkt_geometry(line).is_some()
 }
 
 /// The points of the WKT text of `reader`; see the module docs.
@@ -144,7 +124,7 @@ impl<'a> Parser<'a> {
             self.expect(";")?;
         }
         let keyword = match self.peek() {
-            Some(t) => KEYWORDS.iter().find(|k| t.text.eq_ignore_ascii_case(k)).copied(),
+            Some(t) => WKT_GEOMETRIES.iter().find(|k| t.text.eq_ignore_ascii_case(k)).copied(),
             None => None,
         };
         let Some(keyword) = keyword else {

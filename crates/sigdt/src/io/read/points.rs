@@ -140,22 +140,38 @@ fn foreign_format(line: &str) -> Option<String> {
     if line.starts_with(['{', '[']) {
         return Some("GeoJSON or other JSON".to_string());
     }
-    const WKT: [&str; 7] = [
-        "GEOMETRYCOLLECTION",
-        "MULTIPOLYGON",
-        "MULTILINESTRING",
-        "MULTIPOINT",
-        "POLYGON",
-        "LINESTRING",
-        "POINT",
-    ];
+    wkt_geometry(line).map(|keyword| format!("WKT ({keyword})"))
+}
+
+/// The WKT geometry keywords, longest first (so that a prefix never matches early).
+pub const WKT_GEOMETRIES: [&str; 7] = [
+    "GEOMETRYCOLLECTION",
+    "MULTIPOLYGON",
+    "MULTILINESTRING",
+    "MULTIPOINT",
+    "POLYGON",
+    "LINESTRING",
+    "POINT",
+];
+
+/// The geometry keyword (upper case) of a line that starts a WKT geometry: a keyword of
+/// [`WKT_GEOMETRIES`] in any case, an optional `Z`, `M` or `ZM`, then `(` or `EMPTY`; `None`
+/// otherwise, so that a header such as `point x` is not taken for WKT. The plain reader
+/// refuses such a file by name; the command line reads it.
+///
+/// ```
+/// use sigdt::io::wkt_geometry;
+/// assert_eq!(wkt_geometry("MultiPoint Z ((1 2 3))"), Some("MULTIPOINT"));
+/// assert_eq!(wkt_geometry("point x"), None);
+/// ```
+pub fn wkt_geometry(line: &str) -> Option<&'static str> {
+    let line = line.trim_start();
     let word: String = line.chars().take_while(char::is_ascii_alphabetic).collect();
-    let keyword = WKT.iter().find(|k| word.eq_ignore_ascii_case(k))?;
-    // A keyword, an optional Z, M or ZM, then `(` or EMPTY: not a header such as `point x`.
+    let keyword = WKT_GEOMETRIES.iter().find(|k| word.eq_ignore_ascii_case(k))?;
     let rest = line[word.len()..].trim_start().to_ascii_uppercase();
     let rest = ["ZM", "Z", "M"].iter().find_map(|d| rest.strip_prefix(d)).unwrap_or(&rest);
     let rest = rest.trim_start();
-    (rest.starts_with('(') || rest.starts_with("EMPTY")).then(|| format!("WKT ({keyword})"))
+    (rest.starts_with('(') || rest.starts_with("EMPTY")).then_some(*keyword)
 }
 
 /// Whether a plain line is a header: a line of names. Every field has a letter and none
