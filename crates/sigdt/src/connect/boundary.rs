@@ -159,9 +159,7 @@ impl<'a> Boundary<'a> {
     /// (the triangles, graph `g`, the current labels and dangling edges; no steps yet).
     pub fn start_trace(&mut self, g: &EdgeMask) -> Trace {
         let dt = self.dt;
-        let triangles = (0..dt.num_triangles() as u32)
-            .map(|t| [0, 1, 2].map(|k| dt.input_index(dt.origin(3 * t + k))))
-            .collect();
+        let triangles = dt.input_triangles();
         let dangling = dt.to_input_edges(
             dt.edge_halfedges()
                 .filter(|&h| self.edges.contains(h) && !self.left_is_in(h) && !self.right_is_in(h))

@@ -101,7 +101,7 @@ impl Trace {
     pub fn boundary_at(&self, step: usize) -> Vec<Edge> {
         let mut replay = Replay::new(self);
         for s in &self.steps[..step.min(self.steps.len())] {
-            replay.apply(s, |_| {});
+            replay.apply(s, |_, _| {});
         }
         let mut edges: Vec<Edge> =
             (0..replay.edges.len()).filter(|&e| replay.on[e]).map(|e| replay.edges[e]).collect();
@@ -116,11 +116,26 @@ impl Trace {
         let mut changes = Vec::with_capacity(self.steps.len());
         for s in &self.steps {
             let mut toggled = Vec::new();
-            replay.apply(s, |e| toggled.push(e));
+            replay.apply(s, |_, e| toggled.push(e));
             toggled.sort_unstable();
             changes.push(toggled);
         }
         changes
+    }
+
+    /// [`boundary_changes`](Self::boundary_changes) said through the step's triangle: bit `k`
+    /// of the byte of step `s` is set when the side from `triangles[t][k]` to
+    /// `triangles[t][(k + 1) % 3]` of its triangle `t` enters or leaves the boundary (a step
+    /// changes no other edge). One byte a step, for compact storage.
+    pub fn boundary_change_sides(&self) -> Vec<u8> {
+        let mut replay = Replay::new(self);
+        let mut sides = Vec::with_capacity(self.steps.len());
+        for s in &self.steps {
+            let mut mask = 0u8;
+            replay.apply(s, |k, _| mask |= 1 << k);
+            sides.push(mask);
+        }
+        sides
     }
 }
 
@@ -181,15 +196,16 @@ impl Replay {
         label(left) != label(right) || (self.dangling[e] && !ever(left) && !ever(right))
     }
 
-    /// Applies step `s`, calling `toggled` with every edge that enters or leaves the boundary.
-    fn apply(&mut self, s: &Step, mut toggled: impl FnMut(Edge)) {
+    /// Applies step `s`, calling `toggled(k, edge)` with every edge that enters or leaves the
+    /// boundary: side `k` of the step's triangle.
+    fn apply(&mut self, s: &Step, mut toggled: impl FnMut(usize, Edge)) {
         self.inside[s.triangle] = s.inside;
         self.ever_inside[s.triangle] |= s.inside;
-        for e in self.of_triangle[s.triangle] {
+        for (k, e) in self.of_triangle[s.triangle].into_iter().enumerate() {
             let now = self.member(e);
             if now != self.on[e] {
                 self.on[e] = now;
-                toggled(self.edges[e]);
+                toggled(k, self.edges[e]);
             }
         }
     }
@@ -240,5 +256,26 @@ mod tests {
         }
         assert_eq!(trace.inside_at(2), vec![true, true]);
         assert_eq!(Phase::ALL.map(Phase::code), [0, 1, 2]);
+    }
+
+    #[test]
+    fn change_sides_name_the_changed_edges() {
+        let trace = square();
+        // Triangle 0 is [0, 1, 2]: side 2 is 2-0. Triangle 1 is [0, 2, 3]: all three sides.
+        assert_eq!(trace.boundary_change_sides(), vec![0b100, 0b111, 0b111]);
+        for ((step, mask), change) in
+            trace.steps.iter().zip(trace.boundary_change_sides()).zip(trace.boundary_changes())
+        {
+            let tri = trace.triangles[step.triangle];
+            let mut sides: Vec<Edge> = (0..3)
+                .filter(|k| mask & (1 << k) != 0)
+                .map(|k| {
+                    let (i, j) = (tri[k], tri[(k + 1) % 3]);
+                    [i.min(j), i.max(j)]
+                })
+                .collect();
+            sides.sort_unstable();
+            assert_eq!(sides, change);
+        }
     }
 }

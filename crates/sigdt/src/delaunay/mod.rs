@@ -142,6 +142,14 @@ impl Triangulation {
         &self.duplicates
     }
 
+    /// Every triangle as input indices (duplicates by their representative), counter-clockwise,
+    /// in triangle order.
+    pub fn input_triangles(&self) -> Vec<[usize; 3]> {
+        (0..self.num_triangles() as u32)
+            .map(|t| [0, 1, 2].map(|k| self.input_index(self.origin(3 * t + k))))
+            .collect()
+    }
+
     /// Vertex where half-edge `h` starts.
     #[inline]
     pub fn origin(&self, h: u32) -> u32 {
