@@ -32,6 +32,7 @@ _Reconstruction = TypedDict(
 METHODS: list[str]
 GRAPH_KINDS: list[str]
 PHASES: list[str]
+PALETTE: dict[str, str]
 __version__: str
 
 class Trace(object):  # noqa: UP004  # the bases mirror the runtime's, as test_docs.py checks

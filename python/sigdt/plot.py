@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from . import _core
 from ._trace import trace
 from ._types import Method
 
@@ -24,8 +25,10 @@ __all__ = ["plot", "plot_steps"]
 #: and fills are always drawn whole).
 MAX_POINT_MARKERS = 20_000
 
-#: Colours shared with ``sigdt render`` (crates/sigdt-lab/src/render/svg.rs).
-FILL, INK = "#dce8f4", "#1a1a1a"
+#: The colours of every sigdt picture by role, shared with ``sigdt render`` and ``sigdt
+#: view`` (crates/sigdt-lab/src/render/palette.rs).
+PALETTE: dict[str, str] = dict(_core.PALETTE)
+FILL, INK = PALETTE["fill"], PALETTE["ink"]
 
 
 def plot(
@@ -108,8 +111,10 @@ def plot_steps(
     """Draw inflating and sculpting step by step, one panel per chosen step.
 
     Each panel shows the Delaunay triangles (faint), the interior triangles (filled), the
-    triangle the step just relabelled (orange), the boundary after that step and the
-    points, titled ``"start"``, ``"inflate k/K"`` or ``"sculpt k/K"``.
+    triangle the step just relabelled (in its phase's colour: orange when inflating,
+    sky blue for a pocket, vermillion when sculpting), the boundary after that step and the
+    points, titled ``"start"``, ``"inflate k/K"`` or ``"sculpt k/K"``. The colours are those
+    of ``sigdt render`` and ``sigdt view``.
 
     Parameters
     ----------
@@ -211,15 +216,18 @@ def _draw_step(ax: Any, tr: Trace, k: int, edges: np.ndarray) -> None:
     from matplotlib.collections import LineCollection, PolyCollection
 
     pts = np.asarray(tr.points)
-    ax.add_collection(LineCollection(pts[edges], colors="#d0d0d0", linewidths=0.4, zorder=0))
+    ax.add_collection(LineCollection(pts[edges], colors=PALETTE["dt"], linewidths=0.4, zorder=0))
     inside = tr.inside_at(k)
-    ax.add_collection(PolyCollection(pts[tr.triangles[inside]], facecolors="#dbe9f6", zorder=1))
+    ax.add_collection(PolyCollection(pts[tr.triangles[inside]], facecolors=FILL, zorder=1))
     if k > 0:
         last = pts[tr.triangles[tr.step_triangle[k - 1 : k]]]
-        ax.add_collection(PolyCollection(last, facecolors="#f5b041", alpha=0.8, zorder=2))
+        colour = PALETTE[_core.PHASES[tr.step_phase[k - 1]]]
+        ax.add_collection(PolyCollection(last, facecolors=colour, edgecolors=colour, zorder=2))
     boundary = tr.boundary_at(k)
-    ax.add_collection(LineCollection(pts[boundary], colors="#1f4e79", linewidths=1.2, zorder=3))
-    ax.plot(*pts.T, "o", color="#c0392b", markersize=2, zorder=4)
+    ax.add_collection(
+        LineCollection(pts[boundary], colors=PALETTE["step_boundary"], linewidths=1.2, zorder=3)
+    )
+    ax.plot(*pts.T, "o", color=INK, markersize=2, zorder=4)
     ax.set_aspect("equal")
     ax.autoscale_view()
     ax.set_xticks([])

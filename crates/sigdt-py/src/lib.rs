@@ -225,6 +225,10 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("METHODS", Method::ALL.iter().map(|m| m.name()).collect::<Vec<_>>())?;
     m.add("GRAPH_KINDS", GraphKind::NAMES.to_vec())?;
     m.add("PHASES", Phase::ALL.iter().map(|p| p.name()).collect::<Vec<_>>())?;
+    // The colours of every picture, shared with `sigdt render` and `sigdt view`.
+    let palette: std::collections::HashMap<&str, &str> =
+        sigdt_lab::render::palette::PALETTE.into_iter().collect();
+    m.add("PALETTE", palette)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -4,9 +4,11 @@
 //! - `frame`: the page layout, and line widths and dot sizes from the point spacing.
 //! - `path`: compact path data (one `<path>` per layer) and edge chaining.
 //! - `legend`: the legend and text escaping.
+//! - [`palette`]: the colours, shared with the viewer and Python.
 
 mod frame;
 mod legend;
+pub mod palette;
 mod path;
 mod svg;
 #[cfg(test)]

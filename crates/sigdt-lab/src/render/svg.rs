@@ -4,6 +4,9 @@ use std::fmt::Write as _;
 
 use super::frame::{is_finite, Frame, Px};
 use super::legend::{self, Entry, Swatch};
+use super::palette::{
+    BACKGROUND, BLUE, FILL, GREEN, GREY, INK, ORANGE, PURPLE, SKY, TRUTH, VERMILLION,
+};
 use super::path::{pixels, polylines, PathData};
 use sigdt::{Edge, Point, Reconstruction};
 
@@ -51,19 +54,6 @@ impl Default for RenderOptions {
     }
 }
 
-// The Okabe–Ito palette, which stays distinct under the common colour-vision deficiencies.
-// Missing and extra edges use its most distinct pair, vermillion and blue, and missing edges
-// are also dashed so they differ in shape, not only in colour.
-const INK: &str = "#1a1a1a";
-const GREY: &str = "#b4b4b4";
-const SKY: &str = "#56b4e9";
-const GREEN: &str = "#009e73";
-const PURPLE: &str = "#cc79a7";
-const ORANGE: &str = "#e69f00";
-const VERMILLION: &str = "#d55e00";
-const BLUE: &str = "#0072b2";
-const TRUTH: &str = "#6b6b6b";
-const FILL: &str = "#dce8f4";
 /// Missing and extra edges shorter than this (pixels) also get a ring, so they can be
 /// found in a dense picture.
 const MARK_BELOW_PX: f64 = 8.0;
@@ -186,7 +176,7 @@ pub fn render_svg(points: &[Point], layers: &Layers, options: &RenderOptions) ->
         out,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" \
          viewBox=\"0 0 {w} {h}\">\n<title>{title}</title>\n\
-         <rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
+         <rect width=\"100%\" height=\"100%\" fill=\"{BACKGROUND}\"/>\n"
     );
     if options.title.is_some() {
         let _ = writeln!(
