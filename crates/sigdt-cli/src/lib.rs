@@ -24,6 +24,7 @@ mod messages;
 mod methods;
 mod output;
 mod png;
+mod progress;
 mod read;
 mod view;
 

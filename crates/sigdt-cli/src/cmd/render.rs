@@ -11,6 +11,7 @@ use sigdt_lab::render::{render_svg, Layers, RenderOptions};
 use crate::input::{ground_truth, picture_title, Input};
 use crate::messages::UsageError;
 use crate::output::Output;
+use crate::progress::{thousands, Stages};
 
 /// A layer of `sigdt render`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -83,6 +84,8 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
         }
     };
     let output = Output::new(Some(&args.output), &args.input)?;
+    let progress = Stages::new("render");
+    progress.stage(format!("reading {}", args.input.display()));
     let points = input.points(&args.input)?;
     let gt = ground_truth(args.gt.as_deref(), points.len(), "render")?;
     let mut wanted = args.layers.clone();
@@ -99,8 +102,17 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     // One triangulation serves every layer; the points and the ground truth alone need none.
     let computed =
         [Layer::Dt, Layer::Sig, Layer::Sigdt, Layer::Sigdt2, Layer::Boundary, Layer::Result];
-    let dt = if computed.into_iter().any(has) { Some(Triangulation::new(&points)?) } else { None };
+    let dt = match computed.into_iter().any(has) {
+        true => {
+            progress.stage(format!("triangulating {} points", thousands(points.len())));
+            Some(Triangulation::new(&points)?)
+        }
+        false => None,
+    };
     let on = |l: Layer| dt.as_ref().filter(|_| has(l));
+    if [Layer::Dt, Layer::Sig, Layer::Sigdt, Layer::Sigdt2].into_iter().any(has) {
+        progress.stage("proximity graphs");
+    }
     let graph = |l: Layer, kind: GraphKind| on(l).map(|dt| sigdt::proximity_graph_on(dt, kind));
     let (delaunay, sigdt, sigdt2) = (
         graph(Layer::Dt, GraphKind::Dt),
@@ -111,7 +123,12 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     let options = Options { method: args.method, ..Options::default() };
     let (rec, trace) = match on(Layer::Result).or_else(|| on(Layer::Boundary)) {
         Some(dt) => {
-            let (rec, trace) = sigdt::reconstruct_traced_on(dt, &options);
+            progress.stage(format!("reconstructing ({})", args.method));
+            // Only the boundary layer needs the steps, which cost time and memory to record.
+            let (rec, trace) = match has(Layer::Boundary) {
+                true => sigdt::reconstruct_traced_on(dt, &options),
+                false => (sigdt::reconstruct_on(dt, &options), None),
+            };
             (Some(rec), trace)
         }
         None => (None, None),
@@ -134,11 +151,15 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     let title = args.title.clone().unwrap_or_else(|| picture_title(&args.input, points.len()));
     let render_options =
         RenderOptions { width_px: args.width, title: Some(title), ..RenderOptions::default() };
+    progress.stage("drawing");
     let svg = render_svg(&points, &layers, &render_options);
     if png {
+        progress.stage("rasterising");
         let bytes = crate::png::svg_to_png(&svg)?;
+        progress.stage(format!("writing {}", args.output.display()));
         output.write(|w| w.write_all(&bytes))
     } else {
+        progress.stage(format!("writing {}", args.output.display()));
         output.write(|w| w.write_all(svg.as_bytes()))
     }
 }

@@ -1,15 +1,16 @@
 //! `sigdt view`: the self-contained HTML viewer of one reconstruction, with the steps of
 //! inflating and sculpting. The page and its data format are in [`view`](crate::view).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-use anyhow::Result;
+use anyhow::{bail, Result};
 use clap::Args;
 use sigdt::{GraphKind, Method, Options, Triangulation};
 
 use crate::input::{ground_truth, picture_title, Input};
 use crate::messages::UsageError;
 use crate::output::Output;
+use crate::progress::{size, thousands, Stages};
 use crate::view::{view_json, viewer_html, ViewData};
 
 /// `sigdt view`.
@@ -31,7 +32,13 @@ pub struct ViewArgs {
     /// Title of the page [default: the input file name].
     #[arg(long, value_name = "TEXT")]
     pub title: Option<String>,
+    /// Leave out the replay of inflating and sculpting: a smaller page for large inputs.
+    #[arg(long)]
+    pub no_steps: bool,
 }
+
+/// Pages larger than this get a warning: browsers take a while to open them.
+const LARGE_PAGE_BYTES: usize = 50_000_000;
 
 /// `sigdt view`.
 pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
@@ -48,22 +55,42 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
         .into());
     }
     let output = Output::new(Some(&args.output), &args.input)?;
+    let progress = Stages::new("view");
+    progress.stage(format!("reading {}", args.input.display()));
     let points = input.points(&args.input)?;
+    if u32::try_from(points.len()).is_err() {
+        bail!("{}: the viewer shows at most {} points", args.input.display(), u32::MAX);
+    }
     let gt = ground_truth(args.gt.as_deref(), points.len(), "view")?;
     // One triangulation serves the reconstruction, the graphs and the SIG radii.
+    progress.stage(format!("triangulating {} points", thousands(points.len())));
     let dt = Triangulation::new(&points)?;
+    progress.stage(format!("reconstructing ({})", args.method));
     let options = Options { method: args.method, ..Options::default() };
-    let (rec, trace) = sigdt::reconstruct_traced_on(&dt, &options);
-    let graph = |kind: GraphKind| sigdt::proximity_graph_on(&dt, kind);
-    let (delaunay, sigdt, sigdt2) =
-        (graph(GraphKind::Dt), graph(GraphKind::SigDt), graph(GraphKind::SigDt2));
-    let nn = sigdt::nearest_neighbour_distances(&dt, &points);
-    let inflated = trace.as_ref().map(|t| t.boundary_at(t.inflated_at));
+    let (rec, trace) = match args.no_steps {
+        true => (sigdt::reconstruct_on(&dt, &options), None),
+        false => sigdt::reconstruct_traced_on(&dt, &options),
+    };
+    progress.stage("proximity graphs");
+    // The layers are independent: one thread each.
+    let ((delaunay, sigdt, sigdt2), (nn, inflated)) = std::thread::scope(|scope| {
+        let dt = &dt;
+        let graph = |kind| scope.spawn(move || sigdt::proximity_graph_on(dt, kind));
+        let graphs = [GraphKind::Dt, GraphKind::SigDt, GraphKind::SigDt2].map(graph);
+        let nn = scope.spawn(|| sigdt::nearest_neighbour_distances(dt, &points));
+        let inflated = trace.as_ref().map(|t| t.boundary_at(t.inflated_at));
+        let [a, b, c] = graphs.map(joined);
+        ((a, b, c), (joined(nn), inflated))
+    });
     let mut layers = vec![("dt", &delaunay[..]), ("sigdt", &sigdt[..]), ("sigdt2", &sigdt2[..])];
     if let Some(boundary) = &inflated {
         layers.push(("boundary", boundary));
     }
     layers.push(("result", &rec.edges));
+    let triangles = match &trace {
+        Some(trace) => trace.triangles.clone(),
+        None => dt.input_triangles(),
+    };
     let title = args.title.clone().unwrap_or_else(|| picture_title(&args.input, points.len()));
     let method = args.method.to_string();
     let data = ViewData {
@@ -72,10 +99,56 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
         status: rec.status.name(),
         points: &points,
         nn: &nn,
+        triangles: &triangles,
         layers,
         gt: gt.as_deref(),
         trace: trace.as_ref(),
     };
+    progress.stage("encoding the page");
     let html = viewer_html(&view_json(&data));
+    if let Some(warning) = size_warning(&args.output, html.len(), trace.is_some()) {
+        progress.note(&warning);
+    }
+    progress.stage(format!("writing {} ({})", args.output.display(), size(html.len())));
     output.write(|w| w.write_all(html.as_bytes()))
+}
+
+/// The warning for a page of `bytes` bytes written to `path`, if it is over
+/// [`LARGE_PAGE_BYTES`]; `steps`: whether it holds the replay, which `--no-steps` leaves out.
+fn size_warning(path: &Path, bytes: usize, steps: bool) -> Option<String> {
+    (bytes > LARGE_PAGE_BYTES).then(|| {
+        let smaller = if steps { "; --no-steps leaves out the replay" } else { "" };
+        format!(
+            "sigdt view: warning: {} will be {}, more than {}: a browser takes a while to \
+             open it{smaller}",
+            path.display(),
+            size(bytes),
+            size(LARGE_PAGE_BYTES)
+        )
+    })
+}
+
+/// The result of a scoped thread; its panic, if any, goes on in this thread.
+fn joined<T>(handle: std::thread::ScopedJoinHandle<'_, T>) -> T {
+    handle.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn large_pages_are_announced() {
+        let path = Path::new("big.html");
+        assert_eq!(size_warning(path, LARGE_PAGE_BYTES, true), None);
+        assert_eq!(
+            size_warning(path, LARGE_PAGE_BYTES + 1, true).as_deref(),
+            Some(
+                "sigdt view: warning: big.html will be 51 MB, more than 50 MB: a browser takes \
+                 a while to open it; --no-steps leaves out the replay"
+            )
+        );
+        let without = size_warning(path, 74_559_694, false).expect("a warning");
+        assert!(without.ends_with("75 MB, more than 50 MB: a browser takes a while to open it"));
+    }
 }

@@ -1,29 +1,30 @@
-// draw.js: the camera (pan, zoom, fit) and the canvas drawing, one path per layer.
+// draw.js: the camera (pan, zoom, fit), and drawing on the canvas or, for export, into SVG.
 //
 // Screen position of point i: (x * scale + tx, ty - y * scale), y pointing up. Coordinates
 // are transformed here rather than by the canvas, so line widths stay in screen pixels.
 
-/** The layers, in legend order. `on`: shown at start (with a trace / without one). */
+/**
+ * The layers, in legend order: `color` names a role of the palette (shared with `sigdt
+ * render` and Python's plot), `on` says whether it is shown at start (with a trace / without).
+ */
 const LAYERS = [
-  { id: "points", label: "points", color: "#1b1f27", on: [1, 1] },
-  { id: "dt", label: "DT", color: "#b8bec8", width: 0.8, on: [0, 0] },
-  { id: "sig", label: "SIG circles", color: "rgba(66, 133, 244, 0.45)", width: 0.8, on: [0, 0] },
-  { id: "sigdt", label: "SIGDT", color: "#3d7fd9", width: 1.3, on: [0, 0] },
-  { id: "sigdt2", label: "SIGDT2 (leaf edges)", color: "#c39bf0", width: 4, on: [0, 0] },
-  { id: "boundary", label: "inflated boundary", color: "#f28e1c", width: 2, dash: [7, 5], on: [0, 0] },
-  { id: "result", label: "result", color: "#d62728", width: 1.6, on: [1, 1] },
-  { id: "gt", label: "ground truth", color: "rgba(44, 170, 90, 0.38)", width: 8, on: [0, 1] },
-  { id: "interior", label: "interior (step)", color: "rgba(240, 186, 80, 0.38)", fill: true, on: [1, 0] },
-  { id: "current", label: "boundary (step)", color: "rgba(27, 31, 39, 0.85)", width: 3, on: [1, 0] },
+  { id: "points", label: "points", color: "ink", on: [1, 1] },
+  { id: "dt", label: "DT", color: "dt", width: 0.8, on: [0, 0] },
+  { id: "sig", label: "SIG circles", color: "sig", width: 0.8, alpha: 0.8, on: [0, 0] },
+  { id: "sigdt", label: "SIGDT", color: "sigdt", width: 1.3, on: [0, 0] },
+  { id: "sigdt2", label: "SIGDT2 (leaf edges)", color: "sigdt2", width: 4, on: [0, 0] },
+  { id: "boundary", label: "inflated boundary", color: "boundary", width: 2, dash: [7, 5], on: [0, 0] },
+  { id: "result", label: "result", color: "result", width: 1.6, on: [1, 1] },
+  { id: "gt", label: "ground truth", color: "truth", width: 8, alpha: 0.35, on: [0, 1] },
+  { id: "interior", label: "interior (step)", color: "fill", fill: true, on: [1, 0] },
+  { id: "current", label: "boundary (step)", color: "step_boundary", width: 1.6, on: [1, 0] },
+  { id: "changed", label: "last step's triangle", color: "inflate", fill: true, on: [1, 0] },
 ];
-const DRAW_ORDER = ["interior", "gt", "dt", "sigdt2", "sigdt", "sig", "current", "boundary", "result", "points"];
-// By phase name (the trace's `phases`).
-const STEP_COLORS = {
-  inflate: "rgba(36, 170, 80, 0.75)",
-  pocket: "rgba(0, 150, 170, 0.75)",
-  sculpt: "rgba(214, 39, 40, 0.7)",
-};
-const BACKGROUND = "#fbfbfa";
+// The step boundary is drawn under the result with the same width: at the end they coincide
+// and the result shows as `sigdt render` draws it.
+const DRAW_ORDER = ["interior", "gt", "dt", "sigdt2", "sigdt", "sig", "boundary", "current", "result", "changed", "points"];
+// A triangle thinner than this on screen (pixels) also gets a ring, so a sliver can be found.
+const SLIVER_PX = 4;
 
 const clamp = (x, lo, hi) => Math.min(Math.max(x, lo), hi);
 
@@ -31,6 +32,8 @@ function View(canvas, model) {
   this.canvas = canvas;
   this.ctx = canvas.getContext("2d");
   this.model = model;
+  this.palette = model.palette;
+  this.styles = Object.fromEntries(LAYERS.map((l) => [l.id, { ...l, color: model.palette[l.color] }]));
   this.scale = 1;
   this.tx = 0;
   this.ty = 0;
@@ -104,31 +107,36 @@ View.prototype.request = function () {
   });
 };
 
-View.prototype.draw = function () {
-  const { ctx, model, sx, sy } = this;
+/** Draws the visible layers with `ctx` (the canvas's, or an SvgContext to export). */
+View.prototype.draw = function (ctx = this.ctx, hover = true) {
+  const { model, sx, sy } = this;
   for (let i = 0; i < model.n; i++) {
     sx[i] = model.xs[i] * this.scale + this.tx;
     sy[i] = this.ty - model.ys[i] * this.scale;
   }
-  ctx.fillStyle = BACKGROUND;
+  ctx.globalAlpha = 1;
+  ctx.fillStyle = this.palette.background;
   ctx.fillRect(0, 0, this.width, this.height);
   ctx.lineCap = "round";
   ctx.lineJoin = "round";
   const trace = model.trace;
   for (const id of DRAW_ORDER) {
     if (!this.visible[id]) continue;
-    const style = LAYERS.find((l) => l.id === id);
-    if (id === "points") this.drawPoints(style);
-    else if (id === "sig") this.drawCircles(style);
-    else if (id === "interior" && trace) this.drawInterior(style);
-    else if (id === "current" && trace) this.strokeEdges(this.currentBoundary().edges, style);
-    else if (model.edges[id]) this.strokeEdges(model.edges[id], style);
+    const style = this.styles[id];
+    ctx.globalAlpha = style.alpha || 1;
+    if (id === "points") this.drawPoints(ctx, style);
+    else if (id === "sig") this.drawCircles(ctx, style);
+    else if (id === "interior" && trace) this.drawInterior(ctx, style);
+    else if (id === "current" && trace) this.strokeEdges(ctx, this.currentBoundary().edges, style);
+    else if (id === "changed" && trace) this.drawChanged(ctx);
+    else if (model.edges[id]) this.strokeEdges(ctx, model.edges[id], style);
   }
-  if (this.hover >= 0) {
+  ctx.globalAlpha = 1;
+  if (hover && this.hover >= 0) {
     ctx.beginPath();
     ctx.arc(sx[this.hover], sy[this.hover], 7, 0, 2 * Math.PI);
     ctx.lineWidth = 2;
-    ctx.strokeStyle = "#d62728";
+    ctx.strokeStyle = this.palette.missing;
     ctx.stroke();
   }
 };
@@ -162,9 +170,9 @@ View.prototype.visibleEdges = function (edges, pad) {
  * Strokes the edges of a flat edge array. Wide and dashed lines are slow to
  * rasterise, so beyond 20,000 visible edges they are drawn as plain hairlines.
  */
-View.prototype.strokeEdges = function (edges, style) {
+View.prototype.strokeEdges = function (ctx, edges, style) {
   if (!edges) return;
-  const { ctx, sx, sy } = this;
+  const { sx, sy } = this;
   const shown = this.visibleEdges(edges, style.width);
   const many = shown.length > 20000;
   ctx.setLineDash(many ? [] : style.dash || []);
@@ -180,10 +188,11 @@ View.prototype.strokeEdges = function (edges, style) {
     ctx.stroke();
   }
   ctx.setLineDash([]);
+  ctx.lineCap = "round";
 };
 
-View.prototype.drawPoints = function (style) {
-  const { ctx, sx, sy } = this;
+View.prototype.drawPoints = function (ctx, style) {
+  const { sx, sy } = this;
   const n = this.model.n;
   const r = n > 20000 ? 1.2 : n > 2000 ? 1.8 : 2.6;
   // With many points, one dot per pixel is enough.
@@ -214,8 +223,8 @@ View.prototype.drawPoints = function (style) {
   ctx.fill();
 };
 
-View.prototype.drawCircles = function (style) {
-  const { ctx, sx, sy } = this;
+View.prototype.drawCircles = function (ctx, style) {
+  const { sx, sy } = this;
   const nn = this.model.nn;
   ctx.lineWidth = style.width;
   ctx.strokeStyle = style.color;
@@ -238,10 +247,10 @@ View.prototype.drawCircles = function (style) {
 /**
  * The interior at the current step, filled through its boundary cycles (nonzero rule), or
  * triangle by triangle when there are many small cycles (which the rasteriser handles
- * slowly); then the triangle changed by the last step.
+ * slowly).
  */
-View.prototype.drawInterior = function (style) {
-  const { ctx, sx, sy } = this;
+View.prototype.drawInterior = function (ctx, style) {
+  const { sx, sy } = this;
   const { loops, starts } = this.currentBoundary();
   ctx.fillStyle = style.color;
   ctx.beginPath();
@@ -274,30 +283,46 @@ View.prototype.drawInterior = function (style) {
     }
   }
   ctx.fill("nonzero");
+};
+
+/** The triangle changed by the last step and its colour, or null at step 0. */
+View.prototype.changed = function () {
   const trace = this.model.trace;
-  if (this.step > 0 && this.step <= trace.steps) {
-    const k = this.step - 1;
-    const t = trace.stepTriangle[k];
-    const [a, b, c] = [trace.tri[3 * t], trace.tri[3 * t + 1], trace.tri[3 * t + 2]];
+  if (!trace || this.step <= 0) return null;
+  const k = this.step - 1;
+  const t = trace.stepTriangle[k];
+  const corners = [0, 1, 2].map((c) => trace.tri[3 * t + c]);
+  return { corners, color: this.palette[trace.phaseName(k)] || this.palette.inflate };
+};
+
+/**
+ * The triangle changed by the last step: filled and outlined in its phase's colour, so that
+ * a sliver still shows as a line, and ringed when it is thinner or smaller than a few
+ * pixels.
+ */
+View.prototype.drawChanged = function (ctx) {
+  const changed = this.changed();
+  if (!changed) return;
+  const { sx, sy } = this;
+  const [a, b, c] = changed.corners;
+  ctx.beginPath();
+  ctx.moveTo(sx[a], sy[a]);
+  ctx.lineTo(sx[b], sy[b]);
+  ctx.lineTo(sx[c], sy[c]);
+  ctx.closePath();
+  ctx.fillStyle = ctx.strokeStyle = changed.color;
+  ctx.fill();
+  ctx.lineWidth = 2.5;
+  ctx.stroke();
+  // Thickness: twice the area over the longest side.
+  const area2 = Math.abs((sx[b] - sx[a]) * (sy[c] - sy[a]) - (sy[b] - sy[a]) * (sx[c] - sx[a]));
+  const side = Math.max(Math.hypot(sx[b] - sx[a], sy[b] - sy[a]), Math.hypot(sx[c] - sx[b], sy[c] - sy[b]), Math.hypot(sx[a] - sx[c], sy[a] - sy[c]));
+  if (side < 2 * SLIVER_PX || area2 < SLIVER_PX * side) {
+    const [cx, cy] = [(sx[a] + sx[b] + sx[c]) / 3, (sy[a] + sy[b] + sy[c]) / 3];
     ctx.beginPath();
-    ctx.moveTo(sx[a], sy[a]);
-    ctx.lineTo(sx[b], sy[b]);
-    ctx.lineTo(sx[c], sy[c]);
-    ctx.closePath();
-    ctx.fillStyle = STEP_COLORS[trace.phaseName(k)] || STEP_COLORS.inflate;
-    ctx.fill();
-    ctx.lineWidth = 1.5;
-    ctx.strokeStyle = "#1b1f27";
+    ctx.arc(cx, cy, Math.max(9, side / 2 + 4), 0, 2 * Math.PI);
+    ctx.lineWidth = 2.5;
     ctx.stroke();
-    const size = Math.max(sx[a], sx[b], sx[c]) - Math.min(sx[a], sx[b], sx[c]) + Math.max(sy[a], sy[b], sy[c]) - Math.min(sy[a], sy[b], sy[c]);
-    if (size < 8) {
-      // Too small to see: ring it.
-      ctx.beginPath();
-      ctx.arc((sx[a] + sx[b] + sx[c]) / 3, (sy[a] + sy[b] + sy[c]) / 3, 9, 0, 2 * Math.PI);
-      ctx.strokeStyle = ctx.fillStyle;
-      ctx.lineWidth = 2.5;
-      ctx.stroke();
-    }
   }
 };
 
@@ -319,4 +344,82 @@ View.prototype.setStep = function (s) {
   trace.seek(this.step);
   this.stepEdges = null; // recomputed by the next frame, however often the slider moves
   this.request();
+};
+
+/** The current view as a standalone SVG document (what the canvas shows, without hover). */
+View.prototype.svg = function () {
+  const svg = new SvgContext(this.width, this.height);
+  this.draw(svg, false);
+  return svg.document(this.model.title);
+};
+
+/**
+ * The subset of the canvas 2D context that View draws with, recording SVG paths: each
+ * fill or stroke becomes one <path> with the current style.
+ */
+function SvgContext(width, height) {
+  this.width = width;
+  this.height = height;
+  this.parts = [];
+  this.d = [];
+  this.dash = [];
+  this.globalAlpha = 1;
+  this.fillStyle = "#000000";
+  this.strokeStyle = "#000000";
+  this.lineWidth = 1;
+  this.lineCap = "butt";
+  this.lineJoin = "miter";
+}
+
+const svgNumber = (x) => String(Math.round(x * 100) / 100);
+
+SvgContext.prototype.beginPath = function () {
+  this.d = [];
+};
+SvgContext.prototype.moveTo = function (x, y) {
+  this.d.push(`M${svgNumber(x)} ${svgNumber(y)}`);
+};
+SvgContext.prototype.lineTo = function (x, y) {
+  this.d.push(`L${svgNumber(x)} ${svgNumber(y)}`);
+};
+SvgContext.prototype.closePath = function () {
+  this.d.push("Z");
+};
+SvgContext.prototype.rect = function (x, y, w, h) {
+  this.d.push(`M${svgNumber(x)} ${svgNumber(y)}h${svgNumber(w)}v${svgNumber(h)}h${svgNumber(-w)}Z`);
+};
+/** Full circles only (the only arcs View draws). */
+SvgContext.prototype.arc = function (cx, cy, r) {
+  const [x0, x1, y, R] = [svgNumber(cx + r), svgNumber(cx - r), svgNumber(cy), svgNumber(r)];
+  this.d.push(`M${x0} ${y}A${R} ${R} 0 1 0 ${x1} ${y}A${R} ${R} 0 1 0 ${x0} ${y}Z`);
+};
+SvgContext.prototype.setLineDash = function (dash) {
+  this.dash = dash;
+};
+SvgContext.prototype.setTransform = function () {};
+SvgContext.prototype.opacity = function (attribute) {
+  return this.globalAlpha < 1 ? ` ${attribute}="${this.globalAlpha}"` : "";
+};
+SvgContext.prototype.fill = function (rule = "nonzero") {
+  if (!this.d.length) return;
+  this.parts.push(`<path fill="${this.fillStyle}" fill-rule="${rule}"${this.opacity("fill-opacity")} d="${this.d.join("")}"/>`);
+};
+SvgContext.prototype.stroke = function () {
+  if (!this.d.length) return;
+  const dash = this.dash.length ? ` stroke-dasharray="${this.dash.join(" ")}"` : "";
+  this.parts.push(
+    `<path fill="none" stroke="${this.strokeStyle}" stroke-width="${svgNumber(this.lineWidth)}" ` +
+      `stroke-linecap="${this.lineCap}" stroke-linejoin="${this.lineJoin}"${dash}${this.opacity("stroke-opacity")} d="${this.d.join("")}"/>`,
+  );
+};
+SvgContext.prototype.fillRect = function (x, y, w, h) {
+  this.parts.push(`<rect x="${svgNumber(x)}" y="${svgNumber(y)}" width="${svgNumber(w)}" height="${svgNumber(h)}" fill="${this.fillStyle}"/>`);
+};
+SvgContext.prototype.document = function (title) {
+  const [w, h] = [svgNumber(this.width), svgNumber(this.height)];
+  const escaped = title.replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;");
+  return (
+    `<svg xmlns="http://www.w3.org/2000/svg" width="${w}" height="${h}" viewBox="0 0 ${w} ${h}">\n` +
+    `<title>${escaped}</title>\n${this.parts.join("\n")}\n</svg>\n`
+  );
 };

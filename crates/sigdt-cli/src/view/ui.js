@@ -1,4 +1,5 @@
-// ui.js: the layer legend, the step controls, mouse and keyboard; `start` runs the page.
+// ui.js: the layer legend, the step controls, export, mouse and keyboard; `start` runs the
+// page.
 
 const $ = (id) => document.getElementById(id);
 const count = (n) => n.toLocaleString("en-US");
@@ -7,7 +8,7 @@ const short = (x) => String(Number(x.toPrecision(6)));
 /** Legend rows with checkboxes (ids as in LAYERS); a layer without data is disabled. */
 function buildLayers(model, view) {
   for (const el of document.querySelectorAll("[data-phase]")) {
-    el.style.setProperty("--c", STEP_COLORS[el.dataset.phase]);
+    el.style.setProperty("--c", model.palette[el.dataset.phase]);
   }
   const list = $("layers");
   const trace = model.trace;
@@ -16,7 +17,9 @@ function buildLayers(model, view) {
     sig: model.n,
     interior: trace ? trace.labels.length : null,
     current: trace ? trace.steps : null,
+    changed: trace ? trace.steps : null,
   };
+  const stepLayers = ["interior", "current", "changed"];
   for (const layer of LAYERS) {
     const edges = model.edges[layer.id];
     const size = layer.id in sizes ? sizes[layer.id] : edges ? edges.length / 2 : null;
@@ -25,11 +28,11 @@ function buildLayers(model, view) {
     const input = document.createElement("input");
     input.type = "checkbox";
     input.id = layer.id;
-    input.disabled = size === null || (trace === null && ["interior", "current"].includes(layer.id));
+    input.disabled = size === null || (trace === null && stepLayers.includes(layer.id));
     input.checked = !input.disabled && Boolean(layer.on[trace ? 0 : 1]);
     const swatch = document.createElement("span");
     swatch.className = `swatch swatch-${layer.fill ? "fill" : layer.id === "points" ? "dot" : layer.id === "sig" ? "ring" : "line"}`;
-    swatch.style.setProperty("--c", layer.color);
+    swatch.style.setProperty("--c", view.styles[layer.id].color);
     swatch.style.setProperty("--w", `${Math.min(layer.width || 2, 6)}px`);
     if (layer.dash) swatch.classList.add("dashed");
     const name = document.createElement("span");
@@ -37,7 +40,7 @@ function buildLayers(model, view) {
     name.textContent = layer.label;
     const n = document.createElement("span");
     n.className = "count";
-    n.textContent = size === null ? "—" : ["interior", "current"].includes(layer.id) ? "" : count(size);
+    n.textContent = size === null ? "—" : stepLayers.includes(layer.id) ? "" : count(size);
     if (layer.id === "interior") n.id = "interior-count";
     if (input.disabled) row.classList.add("missing");
     row.append(input, swatch, name, n);
@@ -69,7 +72,7 @@ function Stepper(model, view) {
   this.rate = Math.max(4, N / 12); // steps per second when playing: about 12 s in all
   const totals = trace.phases.map((name, p) => `${count(trace.totals[p])} ${name}`);
   $("steps-summary").textContent = totals.join(" · ");
-  this.phases(trace);
+  this.phases(trace, view);
   this.slider.addEventListener("input", () => this.go(Number(this.slider.value), true));
   $("back").addEventListener("click", () => this.go(view.step - 1));
   $("forward").addEventListener("click", () => this.go(view.step + 1));
@@ -77,14 +80,14 @@ function Stepper(model, view) {
 }
 
 /** Colours the bar under the slider by the phase of each step; marks the inflated state. */
-Stepper.prototype.phases = function (trace) {
+Stepper.prototype.phases = function (trace, view) {
   const N = trace.steps;
   const stops = [];
   let k = 0;
   while (k < N) {
     let end = k;
     while (end < N && trace.stepPhase[end] === trace.stepPhase[k]) end++;
-    const color = STEP_COLORS[trace.phaseName(k)] || "#999";
+    const color = view.palette[trace.phaseName(k)] || "#999";
     stops.push(`${color} ${((100 * k) / N).toFixed(3)}%`, `${color} ${((100 * end) / N).toFixed(3)}%`);
     k = end;
   }
@@ -141,6 +144,38 @@ Stepper.prototype.stop = function () {
   this.playing = false;
   $("play").textContent = "▶ play";
 };
+
+/** A file name for an export of the current view: the title's first word and the step. */
+function exportName(model, step, extension) {
+  const base = model.title.replace(/\s*\(.*$/, "").replace(/[^\w.-]+/g, "_") || "sigdt-view";
+  return model.trace ? `${base}-step-${step}.${extension}` : `${base}.${extension}`;
+}
+
+/** Saves `blob` as a download named `name`. */
+function download(name, blob) {
+  const link = document.createElement("a");
+  link.href = URL.createObjectURL(blob);
+  link.download = name;
+  document.body.append(link);
+  link.click();
+  link.remove();
+  setTimeout(() => URL.revokeObjectURL(link.href), 10000);
+}
+
+/** The PNG and SVG buttons: the current view, as drawn, without the hover ring. */
+function bindExport(view) {
+  $("export-png").addEventListener("click", () => {
+    view.draw(view.ctx, false);
+    view.canvas.toBlob((blob) => {
+      download(exportName(view.model, view.step, "png"), blob);
+      view.request();
+    }, "image/png");
+  });
+  $("export-svg").addEventListener("click", () => {
+    const blob = new Blob([view.svg()], { type: "image/svg+xml" });
+    download(exportName(view.model, view.step, "svg"), blob);
+  });
+}
 
 /** Drag to pan, wheel to zoom around the cursor, double-click to zoom in; hover names points. */
 function bindCanvas(view) {
@@ -224,10 +259,12 @@ function start() {
   buildLayers(model, view);
   const stepper = new Stepper(model, view);
   bindCanvas(view);
+  bindExport(view);
   bindKeys(view, stepper);
   view.resize();
   view.fit();
-  stepper.go(0);
+  // Open on the result; the slider goes back through the steps.
+  stepper.go(model.trace ? model.trace.steps : 0);
   new ResizeObserver(() => {
     view.resize();
     view.draw();
