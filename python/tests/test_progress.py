@@ -1,5 +1,6 @@
 """``sigdt view`` and ``sigdt render`` name each stage of a long run on a terminal's stderr
-(a spinner line, cleared at the end) and write nothing there when stderr is a pipe."""
+(a spinner line, cleared at the end) and write nothing there when stderr is a pipe: the
+cargo-built binary, and in ``make wheel-test`` also the wheel's ``sigdt`` script."""
 
 from __future__ import annotations
 
@@ -7,6 +8,7 @@ import os
 import pty
 import re
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -70,12 +72,15 @@ def on_a_terminal(args: list) -> tuple[int, str]:
 )
 def test_stages_on_a_terminal_only(cli, repo_root, tmp_path, command, output, stages):
     xy = repo_root / "data" / "inputs" / f"{CASE}.xy"
-    status, drawn = on_a_terminal([cli, command, xy, "-o", tmp_path / output])
-    assert status == 0
-    for stage in stages:
-        assert f"sigdt {command}: {stage}" in drawn, f"{stage!r} not shown:\n{drawn}"
-    piped = subprocess.run(
-        [cli, command, xy, "-o", tmp_path / output], capture_output=True, check=True
-    )
-    assert piped.stderr == b"", piped.stderr
-    assert Path(tmp_path / output).stat().st_size > 0
+    programs = [cli]
+    if os.environ.get("SIGDT_WHEEL_TEST"):
+        programs.append(Path(sys.prefix) / "bin" / "sigdt")
+    for program in programs:
+        run = [program, command, xy, "-o", tmp_path / output]
+        status, drawn = on_a_terminal(run)
+        assert status == 0
+        for stage in stages:
+            assert f"sigdt {command}: {stage}" in drawn, f"{program}: {stage!r} not shown:\n{drawn}"
+        piped = subprocess.run(run, capture_output=True, check=True)
+        assert piped.stderr == b"", piped.stderr
+        assert Path(tmp_path / output).stat().st_size > 0
