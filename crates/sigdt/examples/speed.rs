@@ -39,7 +39,8 @@
 //! written to a temporary file; `sigdt reconstruct FILE -o OUT` with one thread
 //! (`RAYON_NUM_THREADS=1`) and with `T`, and `cgal-delaunay FILE` (read and triangulate) run
 //! in turn `R` times under `/usr/bin/time`: median wall seconds, and the peak resident memory
-//! (`%M`) per point of `sigdt reconstruct`.
+//! (`%M`) per point of `sigdt reconstruct`; then `sigdt view FILE -o PAGE` (its median time
+//! and the page's size) and `sigdt render FILE -o PICTURE.png`, each with `T` threads.
 use rayon::{ThreadPool, ThreadPoolBuilder};
 use sigdt::samplers::{random_closed_curve, spiral_band, Sample};
 use sigdt::{Options, Point, Triangulation};
@@ -135,9 +136,10 @@ fn main() -> Res<()> {
         println!();
         println!(
             "| input | order | n | `sigdt reconstruct` s, 1 thread | {t} threads s | speed-up \
-             | `cgal-delaunay` s | sigdt (1 thread) / CGAL | peak RSS bytes/point |"
+             | `cgal-delaunay` s | sigdt (1 thread) / CGAL | peak RSS bytes/point \
+             | `sigdt view` s | its page MB | `sigdt render` (PNG) s |"
         );
-        println!("|---|---|--:|--:|--:|--:|--:|--:|--:|");
+        println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
         for row in process_rows {
             println!("{row}");
         }
@@ -217,8 +219,9 @@ fn cgal_time(tool: &Path, file: &Path) -> Res<f64> {
     Ok(ms.parse::<f64>()? / 1e3)
 }
 
-/// One row of the whole-process table: `sigdt reconstruct` on one and `t` threads and
-/// `cgal-delaunay`, in turn, under `/usr/bin/time`.
+/// One row of the whole-process table: `sigdt reconstruct` on one and `t` threads,
+/// `cgal-delaunay`, and `sigdt view` and `sigdt render` (a PNG) on `t` threads, in turn,
+/// under `/usr/bin/time`.
 fn whole_process(
     cli: &Path,
     cgal: Option<&Path>,
@@ -228,15 +231,11 @@ fn whole_process(
     args: &Args,
     dir: &Path,
 ) -> Res<String> {
-    let out = dir.join("out.edges");
-    let run = |program: &Path, threads: usize, reconstruct: bool| -> Res<(f64, f64)> {
+    let (out, page, picture) = (dir.join("out.edges"), dir.join("view.html"), dir.join("p.png"));
+    let run = |program: &Path, threads: usize, arguments: &[&Path]| -> Res<(f64, f64)> {
         let mut cmd = Command::new("/usr/bin/time");
         cmd.args(["-f", "%e %M"]).arg(program).env("RAYON_NUM_THREADS", threads.to_string());
-        if reconstruct {
-            cmd.arg("reconstruct").arg(file).arg("-o").arg(&out);
-        } else {
-            cmd.arg(file);
-        }
+        cmd.args(arguments);
         let o = cmd.output()?;
         let text = String::from_utf8_lossy(&o.stderr);
         let last = text.lines().last().unwrap_or_default();
@@ -246,25 +245,35 @@ fn whole_process(
             _ => Err(format!("{}: failed: {text}", program.display()).into()),
         }
     };
+    let o = Path::new("-o");
+    let reconstruct = [Path::new("reconstruct"), file, o, &out];
+    let view = [Path::new("view"), file, o, &page];
+    let render = [Path::new("render"), file, o, &picture];
     let reps = args.reps.unwrap_or(MIN_REPS);
     let (mut ones, mut manys, mut cgals, mut rss) = (vec![], vec![], vec![], vec![]);
+    let (mut views, mut renders) = (vec![], vec![]);
     for _ in 0..reps {
-        let (s, bytes) = run(cli, 1, true)?;
+        let (s, bytes) = run(cli, 1, &reconstruct)?;
         ones.push(s);
         rss.push(bytes);
-        manys.push(run(cli, t, true)?.0);
+        manys.push(run(cli, t, &reconstruct)?.0);
         if let Some(c) = cgal {
-            cgals.push(run(c, 1, false)?.0);
+            cgals.push(run(c, 1, &[file])?.0);
         }
+        views.push(run(cli, t, &view)?.0);
+        renders.push(run(cli, t, &render)?.0);
     }
     let (one, many, peak) = (median(&mut ones), median(&mut manys), median(&mut rss));
     let cgal = (!cgals.is_empty()).then(|| median(&mut cgals));
+    let page_mb = std::fs::metadata(&page)?.len() as f64 / 1e6;
     Ok(format!(
-        "{one:.2} | {many:.2} | {:.2} | {} | {} | {:.0} |",
+        "{one:.2} | {many:.2} | {:.2} | {} | {} | {:.0} | {:.2} | {page_mb:.1} | {:.2} |",
         one / many,
         cgal.map_or("n/a".into(), |c| format!("{c:.2}")),
         cgal.map_or("n/a".into(), |c| format!("{:.2}", one / c)),
-        peak / n as f64
+        peak / n as f64,
+        median(&mut views),
+        median(&mut renders),
     ))
 }
 
