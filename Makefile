@@ -119,8 +119,8 @@ doc:
 ## bench: the speed tables (make bench SIZES=1e5,1e6,1e7 for the large sizes): Delaunay,
 ## total, CGAL (when libcgal-dev is installed), memory per point, one thread against two;
 ## then the whole `sigdt reconstruct` process against CGAL's, and `sigdt view` and `render`;
-## then the slow baselines (FITCONNECT,
-## STRETCHDENOISE, DISCUR, OPTIMALTRANSPORT) against SIG-CONNECT2D from 10^3 to 10^5 points.
+## then the slow baselines (FITCONNECT, STRETCHDENOISE, DISCUR, OPTIMALTRANSPORT) against
+## SIG-CONNECT2D from 10^3 to 10^5 points.
 SIZES ?= 1e3,1e4,1e5,1e6
 CGAL_TOOL := $(TARGET_DIR)/cgal-delaunay
 bench: build
