@@ -141,3 +141,32 @@ fn bad_options_and_degenerate_paths_are_errors() {
     assert!(message(eps_sample(&nan, 0.1, 0.0)).contains("not finite"));
     assert!(eps_sample(&path, 2.0, 0.0).unwrap().points.len() <= 2);
 }
+
+/// A circle drawn with `k` cubics: the medial points of all its dense points crowd at the
+/// centre, which made every lfs query scan them all (k = 32: 73 s; now the k-d tree's cell
+/// pruning makes it about a second in a release build).
+fn circle_of(k: usize, r: f64) -> BezierPath {
+    let step = std::f64::consts::TAU / k as f64;
+    let kappa = 4.0 / 3.0 * (step / 4.0).tan() * r;
+    let arc = |i: usize| {
+        let (a, b) = (i as f64 * step, (i + 1) as f64 * step);
+        let (p, q) = ([r * a.cos(), r * a.sin()], [r * b.cos(), r * b.sin()]);
+        [
+            p,
+            [p[0] - kappa * a.sin(), p[1] + kappa * a.cos()],
+            [q[0] + kappa * b.sin(), q[1] - kappa * b.cos()],
+            q,
+        ]
+    };
+    BezierPath { segments: (0..k).map(arc).collect(), closed: true }
+}
+
+#[test]
+fn a_circle_of_many_cubics_is_sampled_evenly() {
+    let path = circle_of(16, 5.0);
+    let s = eps_sample(&path, 0.3, 0.0).unwrap();
+    let n = s.points.len();
+    let gaps: Vec<f64> = (0..n).map(|i| distance(s.points[i], s.points[(i + 1) % n])).collect();
+    let gap = 2.0 * 0.3 * 5.0 * (1.0 - 0.09 / 4.0f64).sqrt();
+    assert!(gaps[..n - 1].iter().all(|g| (g / gap - 1.0).abs() < 2e-3), "{gaps:?}");
+}
