@@ -418,6 +418,27 @@ fn a_long_line_with_one_point_off() {
     assert_eq!((&rec.status, &rec.paths), (&Status::Curves, &vec![(0..n).collect()]));
 }
 
+#[test]
+fn a_long_line_with_one_point_off_without_leaf_elimination() {
+    // Without leaf elimination, inflating fills the fan one triangle a step, each step
+    // reclassifying the apex of degree n: O(n) a step when classes were read off the star
+    // (43 s at 10^5), O(1) with the boundary's star counts. Debug builds check the counts
+    // against the stars after inflating and after sculpting.
+    let n = size(100_000, 5_000);
+    let mut points: Vec<Point> = (0..n).map(|i| [i as f64, 0.0]).collect();
+    points.push([n as f64 / 2.0 + 0.5, 1.0]);
+    for method in [Method::SigConnect2d, Method::Connect2d] {
+        let options = Options { method, leaf_elimination: false, ..Options::default() };
+        let start = Instant::now();
+        let rec = reconstruct(&points, &options).unwrap();
+        let ms = start.elapsed().as_secs_f64() * 1e3;
+        check_reconstruction(&points, &rec).unwrap();
+        eprintln!("| line 1e5 + point off, no leaf elimination | {} | {method} | {ms:.1} |", n + 1);
+        assert_eq!(rec.status, Status::Polygon, "{method}");
+        assert_eq!(rec.loops, vec![line_and_apex(n)], "{method}");
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // Cocircular points.
 

@@ -23,8 +23,8 @@
 //! # Complexity
 //! O(n log n) for Delaunay triangulations of bounded degree. A step pushes the triangles
 //! beside the ones it turned interior and the stars of vertices whose class changed, and
-//! reclassifies three vertices (O(degree) each): a fan around one vertex of degree `d`
-//! costs O(d) a step in the reclassification, but no longer O(d) queue entries.
+//! reclassifies three vertices in O(1) each (the boundary keeps their star counts): a fan
+//! around one vertex of degree `d` costs O(log n) a step, not O(d).
 //!
 //! # References
 //! - [OM13] S. Ohrhallinger, S. Mudur. An efficient algorithm for determining an aesthetic
@@ -82,6 +82,9 @@ pub fn inflate(bd: &mut Boundary<'_>, g: &EdgeMask, stats: &mut Stats) {
         }
     }
     debug_assert_eq!(bd.non_manifold, 0, "inflating left non-manifold vertices");
+    if cfg!(debug_assertions) {
+        bd.check_classes();
+    }
 }
 
 /// Exterior triangle with a boundary edge that has a non-manifold end.
@@ -134,10 +137,10 @@ fn accept(bd: &mut Boundary<'_>, t: u32, stats: &mut Stats) -> (Vec<u32>, Vec<u3
     bd.set_inside(t, true, Phase::Inflate);
     for h in 3 * t..3 * t + 3 {
         if !bd.edges.contains(h) {
-            bd.edges.set(dt, h, true);
+            bd.set_edge(h, true);
             bd.components.union(dt.origin(h), dt.dest(h));
         } else if bd.right_is_in(h) {
-            bd.edges.set(dt, h, false);
+            bd.set_edge(h, false);
         }
     }
     stats.inflated_triangles += 1;

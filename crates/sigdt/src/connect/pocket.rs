@@ -106,7 +106,7 @@ fn fill(bd: &mut Boundary<'_>, pocket: Vec<u32>) -> Vec<u32> {
     for &t in &pocket {
         for h in 3 * t..3 * t + 3 {
             if bd.edges.contains(h) && bd.right_is_in(h) {
-                bd.edges.set(bd.dt, h, false);
+                bd.set_edge(h, false);
             }
         }
     }

@@ -48,9 +48,9 @@ pub fn sculpt(bd: &mut Boundary<'_>, stats: &mut Stats) {
         }
         let dt = bd.dt;
         bd.set_inside(c.t, false, Phase::Sculpt);
-        bd.edges.set(dt, ab, false);
-        bd.edges.set(dt, next(ab), true);
-        bd.edges.set(dt, prev(ab), true);
+        bd.set_edge(ab, false);
+        bd.set_edge(next(ab), true);
+        bd.set_edge(prev(ab), true);
         stats.sculpted_triangles += 1;
         for h in [ab, next(ab), prev(ab)] {
             bd.reclassify(dt.origin(h));
@@ -60,6 +60,9 @@ pub fn sculpt(bd: &mut Boundary<'_>, stats: &mut Stats) {
                 push_if_candidate(bd, &mut queue, dt.twin(h) / 3);
             }
         }
+    }
+    if cfg!(debug_assertions) {
+        bd.check_classes();
     }
 }
 
