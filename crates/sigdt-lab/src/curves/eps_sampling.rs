@@ -97,6 +97,16 @@ pub struct FramedSample {
 /// [`Error::InvalidOption`] if the path has no segment, a non-finite control point, zero
 /// length, or a point where no tangent direction exists.
 pub fn lfs(path: &BezierPath) -> Result<DenseCurve> {
+    lfs_at_density(path, DENSE_STEPS)
+}
+
+/// [`lfs`] with `density` evaluation parameters per segment instead of [`DENSE_STEPS`]
+/// (dense point `k` is at parameter `k / density`).
+///
+/// # Errors
+/// As [`lfs`].
+pub fn lfs_at_density(path: &BezierPath, density: usize) -> Result<DenseCurve> {
+    let density = density.max(1);
     let bad =
         |what: String| Error::InvalidOption(format!("cannot eps-sample the Bezier path: {what}"));
     if path.segments.is_empty() {
@@ -107,20 +117,20 @@ pub fn lfs(path: &BezierPath) -> Result<DenseCurve> {
     }
     if path.segments.len() > MAX_SEGMENTS {
         return Err(bad(format!(
-            "{} segments is more than {MAX_SEGMENTS} (each is evaluated at {DENSE_STEPS} \
+            "{} segments is more than {MAX_SEGMENTS} (each is evaluated at {density} \
              parameters)",
             path.segments.len()
         )));
     }
-    let n = DENSE_STEPS * path.segments.len() + usize::from(!path.closed);
-    let points: Vec<Point> = (0..n).map(|k| path.point(k as f64 / DENSE_STEPS as f64)).collect();
+    let n = density * path.segments.len() + usize::from(!path.closed);
+    let points: Vec<Point> = (0..n).map(|k| path.point(k as f64 / density as f64)).collect();
     let diag = diagonal(&points);
     let scale = path.segments.iter().flatten().flatten().fold(0.0, |m: f64, v| m.max(v.abs()));
     if diag <= 1e-12 * scale || !diag.is_finite() {
         return Err(bad("it has zero length (or overflows)".into()));
     }
     let normals = (0..n)
-        .map(|k| normal(path, k as f64 / DENSE_STEPS as f64))
+        .map(|k| normal(path, k as f64 / density as f64))
         .collect::<Option<Vec<Point>>>()
         .ok_or_else(|| bad("it has a point without tangent direction".into()))?;
     let medial = medial_points(&points, &normals, 0.5 * diag)?;
@@ -154,18 +164,33 @@ pub fn eps_sample(path: &BezierPath, eps: f64, offset: f64) -> Result<Sample> {
 /// # Errors
 /// As [`eps_sample`].
 pub fn eps_sample_with_frames(path: &BezierPath, eps: f64, offset: f64) -> Result<FramedSample> {
+    eps_sample_at_density(path, eps, offset, DENSE_STEPS)
+}
+
+/// [`eps_sample_with_frames`] on a dense curve of `density` parameters per segment instead
+/// of [`DENSE_STEPS`]: the same walk, coarser lfs. For the fuzz target, which needs many
+/// runs a second.
+///
+/// # Errors
+/// As [`eps_sample`].
+pub fn eps_sample_at_density(
+    path: &BezierPath,
+    eps: f64,
+    offset: f64,
+    density: usize,
+) -> Result<FramedSample> {
+    let density = density.max(1);
     if !(eps > 0.0 && eps <= 2.0) {
         return Err(Error::InvalidOption(format!("eps must be in (0, 2], got {eps}")));
     }
     if !(0.0..1.0).contains(&offset) {
         return Err(Error::InvalidOption(format!("offset must be in [0, 1), got {offset}")));
     }
-    let dense = lfs(path)?;
-    let walker = Walker { path, tree: KdTree::new(&dense.medial), eps };
+    let dense = lfs_at_density(path, density)?;
+    let walker = Walker { path, tree: KdTree::new(&dense.medial), eps, density: density as f64 };
     let span = path.segments.len() as f64;
-    let steps = DENSE_STEPS * path.segments.len();
-    let first =
-        ((offset * steps as f64).floor() as usize).min(steps - 1) as f64 / DENSE_STEPS as f64;
+    let steps = density * path.segments.len();
+    let first = ((offset * steps as f64).floor() as usize).min(steps - 1) as f64 / density as f64;
     let mut params = if path.closed {
         walker.walk(first, first + span, steps)?
     } else {
@@ -195,6 +220,8 @@ struct Walker<'a> {
     path: &'a BezierPath,
     tree: KdTree<'a>,
     eps: f64,
+    /// Dense parameters per segment.
+    density: f64,
 }
 
 impl Walker<'_> {
@@ -245,7 +272,7 @@ impl Walker<'_> {
     /// `None` if the walk reaches `limit`.
     fn reach(&self, from: f64, limit: f64, inside: impl Fn(Point, f64) -> bool) -> Option<f64> {
         let dir = if limit > from { 1.0 } else { -1.0 };
-        let scale = DENSE_STEPS as f64;
+        let scale = self.density;
         let mut k =
             if dir > 0.0 { (from * scale).floor() + 1.0 } else { (from * scale).ceil() - 1.0 };
         let end = (limit * scale).round(); // limits are dense parameters
