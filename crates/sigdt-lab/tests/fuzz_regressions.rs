@@ -146,14 +146,19 @@ fn metrics_of_subnormal_edges_with_a_self_loop_far_away() {
     evaluate_all(&points, &[[16, 2], [1, 1]], &[[2, 3], [0, 8]]);
 }
 
-/// The `svg` fuzz target's findings 7, 8 and 9 (docs/fuzzing.md): an elliptical arc of
-/// radius 4.4e33, one of radius 4.4e12 whose end 4.4e59 away grows its radius, and one that
-/// starts 5e73 away, made the SVG parser expand millions of cubics (over 10 s, then over
+/// The `svg` fuzz target's findings 7 to 10 (docs/fuzzing.md): an elliptical arc of
+/// radius 4.4e33, one of radius 4.4e12 whose end 4.4e59 away grows its radius, one that
+/// starts 5e73 away, and a thin one (radii 9.2e18 and 14) across a chord of 5.6e20, which
+/// SVG grows to 1.7e38, made the SVG parser expand millions of cubics (over 10 s, then over
 /// 2 GB). All are refused at once, naming the line of their `<path`.
 #[test]
 fn svg_arcs_that_would_expand_without_bound_are_refused() {
-    let findings =
-        [("finding-7-huge-arc", 1), ("finding-8-far-arc-end", 4), ("finding-9-far-arc-start", 10)];
+    let findings = [
+        ("finding-7-huge-arc", 1),
+        ("finding-8-far-arc-end", 4),
+        ("finding-9-far-arc-start", 10),
+        ("finding-10-thin-arc-long-chord", 5),
+    ];
     for (seed, line) in findings {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz/seeds/svg");
         let bytes = std::fs::read(path.join(seed)).unwrap();

@@ -326,9 +326,10 @@ fn rounding_apart(path: &BezierPath, at: Point, start: Point) -> bool {
 ///
 /// svgtypes turns an arc into cubics to an absolute tolerance of 0.1, about `(11·r)^(1/6)`
 /// of them a turn: a radius past the limit below makes more than [`MAX_SEGMENTS`], and a
-/// radius of 1e33 takes seconds inside the parser, before any later limit can act. An arc's
-/// radius grows to half its chord when too small to span it, so the chord counts too: the
-/// current point is followed through the raw segments to measure it.
+/// radius of 1e33 takes seconds inside the parser, before any later limit can act (and the
+/// parser then hands the cubics out one by one from the front of a list, quadratic in
+/// their number). Radii too small to span the chord grow as SVG says ([`arc_radius`]), so
+/// the current point is followed through the raw segments to measure the chord.
 fn check_arcs(d: &str) -> std::result::Result<(), String> {
     let limit = 0.1 / 1.1163 * (MAX_SEGMENTS as f64).powi(6);
     let (mut at, mut start) = ([0.0f64; 2], [0.0f64; 2]);
@@ -349,14 +350,13 @@ fn check_arcs(d: &str) -> std::result::Result<(), String> {
             PathSegment::HorizontalLineTo { abs, x } => [if abs { x } else { at[0] + x }, at[1]],
             PathSegment::VerticalLineTo { abs, y } => [at[0], if abs { y } else { at[1] + y }],
             PathSegment::ClosePath { .. } => start,
-            PathSegment::EllipticalArc { abs, rx, ry, x, y, .. } => {
+            PathSegment::EllipticalArc { abs, rx, ry, x_axis_rotation, x, y, .. } => {
                 let end = to(abs, at, x, y);
-                let chord = 0.5 * (end[0] - at[0]).hypot(end[1] - at[1]);
-                let size = rx.abs().max(ry.abs()).max(chord);
+                let size = arc_radius(at, end, rx, ry, x_axis_rotation);
                 if size.is_nan() || size > limit {
                     return Err(format!(
-                        "an elliptical arc of radius {size:e} (or half its chord) would need \
-                         more than {MAX_SEGMENTS} cubic segments"
+                        "an elliptical arc of radius {size:.1e} (grown, as SVG does, to span its \
+                         chord) would need more than {MAX_SEGMENTS} cubic segments"
                     ));
                 }
                 end
@@ -365,6 +365,23 @@ fn check_arcs(d: &str) -> std::result::Result<(), String> {
         at = end;
     }
     Ok(())
+}
+
+/// The larger radius of the arc from `from` to `to` with radii `rx`, `ry` and x-axis
+/// rotation `degrees`, after SVG's correction of radii too small to span the chord (SVG 1.1
+/// F.6.6: both scaled by `√Λ` when `Λ = x₁′²/rx² + y₁′²/ry² > 1`). A thin ellipse across a
+/// long chord grows by the chord over its small radius: `ry = 14` across 5·10²⁰ scales
+/// `rx = 10¹⁹` to 10³⁸. Infinite or NaN when it overflows; zero for a zero radius (a line).
+fn arc_radius(from: [f64; 2], to: [f64; 2], rx: f64, ry: f64, degrees: f64) -> f64 {
+    let (rx, ry) = (rx.abs(), ry.abs());
+    if rx == 0.0 || ry == 0.0 {
+        return 0.0;
+    }
+    let (sin, cos) = degrees.to_radians().sin_cos();
+    let (dx, dy) = (0.5 * (from[0] - to[0]), 0.5 * (from[1] - to[1]));
+    let (x1, y1) = (cos * dx + sin * dy, cos * dy - sin * dx);
+    let lambda = (x1 / rx).powi(2) + (y1 / ry).powi(2);
+    rx.max(ry) * lambda.sqrt().max(1.0)
 }
 
 /// The cubic tracing the straight segment from `p` to `q` at constant speed.
@@ -443,9 +460,16 @@ mod tests {
         assert!(err.contains("elliptical arc of radius 4.4e33"), "{err}");
         // A small radius grows to span a far end point, or a far start (fuzz finds).
         let err = refused("m 1 1 a 44 4.4e12 14 1 0 44 4.4e59");
-        assert!(err.contains("radius 2.2e59"), "{err}");
+        assert!(err.contains("elliptical arc of radius 5.3"), "{err}");
         let err = refused("M 50,5e73 A 14,16 0,1 0 50,10 Z");
-        assert!(err.contains("radius 2.5e73"), "{err}");
+        assert!(err.contains("elliptical arc of radius 2.5e73"), "{err}");
+        // A thin ellipse across a long chord: radii 9.2e18 and 14 scale by 2·10¹⁹ to span
+        // 5.6e20 (fuzz find: svgtypes made millions of cubics, handed out quadratically).
+        let err = refused("M 51,555555555555555555555 A 9169610316303040510 14,16 1 0 50,10");
+        assert!(err.contains("elliptical arc of radius 1.7e38"), "{err}");
+        assert!(arc_radius([0.0, 0.0], [2.0, 0.0], 1.0, 1.0, 0.0) == 1.0);
+        assert!(arc_radius([0.0, 0.0], [4.0, 0.0], 1.0, 1.0, 90.0) == 2.0);
+        assert!(arc_radius([0.0, 0.0], [4.0, 0.0], 0.0, 1.0, 0.0) == 0.0);
         // Ordinary arcs are read as cubics.
         let arc = parse("<path d='M 0 0 A 1 1 0 0 1 2 0'/>").unwrap();
         assert!((1..=8).contains(&arc[0].segments.len()));
