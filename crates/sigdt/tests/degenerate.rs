@@ -428,7 +428,7 @@ fn a_long_line_with_one_point_off_without_leaf_elimination() {
     let mut points: Vec<Point> = (0..n).map(|i| [i as f64, 0.0]).collect();
     points.push([n as f64 / 2.0 + 0.5, 1.0]);
     for method in [Method::SigConnect2d, Method::Connect2d] {
-        let options = Options { method, leaf_elimination: false, ..Options::default() };
+        let options = Options { method, leaf_elimination: false };
         let start = Instant::now();
         let rec = reconstruct(&points, &options).unwrap();
         let ms = start.elapsed().as_secs_f64() * 1e3;
