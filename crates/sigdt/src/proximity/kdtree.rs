@@ -17,7 +17,10 @@
 //! sum of the squared offsets, each a rounded coordinate difference no larger than the
 //! point's own, so it never exceeds a point's computed squared distance: a subtree is
 //! skipped only when none of its points could tie or win, and results are those of a full
-//! scan, ties by index.
+//! scan, ties by index. Each node keeps its left subtree's largest key and its right
+//! subtree's smallest, the subtrees' true extent along the split axis: with many equal keys
+//! (points on two lines), the split point's own key left the other line's cell at distance
+//! zero from every query on the first.
 //!
 //! # Complexity
 //! Build O(n log n); a query visits O(log n + output) nodes on well-spread data, and
@@ -30,6 +33,9 @@ pub struct KdTree<'a> {
     order: Vec<u32>,
     /// The split axis of the node at each position of `order`.
     axes: Vec<u8>,
+    /// Per node: the largest key (split-axis coordinate) of its left subtree and the
+    /// smallest of its right one; a far subtree is at least that far along the axis.
+    extremes: Vec<[f64; 2]>,
 }
 
 impl<'a> KdTree<'a> {
@@ -37,8 +43,9 @@ impl<'a> KdTree<'a> {
     pub fn new(points: &'a [Point]) -> KdTree<'a> {
         let mut order: Vec<u32> = (0..points.len() as u32).collect();
         let mut axes = vec![0; points.len()];
-        build(points, &mut order, &mut axes);
-        KdTree { points, order, axes }
+        let mut extremes = vec![[0.0; 2]; points.len()];
+        build(points, &mut order, &mut axes, &mut extremes);
+        KdTree { points, order, axes, extremes }
     }
 
     /// The `k` points nearest to `q` other than `exclude`, nearest first, as
@@ -86,14 +93,40 @@ impl<'a> KdTree<'a> {
                 best.truncate(k);
             }
         }
-        let delta = q[axis] - p[axis];
-        let (near, far) =
-            if delta <= 0.0 { ((lo, mid), (mid + 1, hi)) } else { ((mid + 1, hi), (lo, mid)) };
-        self.knn(near.0, near.1, q, offsets, k, exclude, best);
-        let far_offsets = beyond(offsets, axis, delta);
-        if best.len() < k || cell_distance(far_offsets) <= best[best.len() - 1].0 {
-            self.knn(far.0, far.1, q, far_offsets, k, exclude, best);
+        let ([left_offsets, right_offsets], left_first) = self.children(mid, axis, q, offsets);
+        let (near, far) = match left_first {
+            true => (((lo, mid), left_offsets), ((mid + 1, hi), right_offsets)),
+            false => (((mid + 1, hi), right_offsets), ((lo, mid), left_offsets)),
+        };
+        self.knn(near.0 .0, near.0 .1, q, near.1, k, exclude, best);
+        if best.len() < k || cell_distance(far.1) <= best[best.len() - 1].0 {
+            self.knn(far.0 .0, far.0 .1, q, far.1, k, exclude, best);
         }
+    }
+
+    /// The offsets of the cells of node `mid`'s two subtrees from `q` (splitting on `axis`,
+    /// its own cell `offsets` away), and whether to search the left one first: the nearer,
+    /// or on a tie the side of `q`'s key.
+    fn children(
+        &self,
+        mid: usize,
+        axis: usize,
+        q: Point,
+        offsets: [f64; 2],
+    ) -> ([[f64; 2]; 2], bool) {
+        let [left_max, right_min] = self.extremes[mid];
+        let (mut left, mut right) = (offsets, offsets);
+        // Each gap is a rounded difference of q and an actual point's coordinate: no larger
+        // than the difference to any point beyond it.
+        if q[axis] > left_max {
+            left[axis] = left[axis].max(q[axis] - left_max);
+        }
+        if q[axis] < right_min {
+            right[axis] = right[axis].max(right_min - q[axis]);
+        }
+        let (l, r) = (cell_distance(left), cell_distance(right));
+        let left_first = l < r || (l == r && q[axis] < self.points[self.order[mid] as usize][axis]);
+        ([left, right], left_first)
     }
 
     /// The points of `order[lo..hi]` within squared distance `r2` of `q`; the range's cell is
@@ -116,25 +149,14 @@ impl<'a> KdTree<'a> {
         if sq(p, q) <= r2 {
             out.push(i);
         }
-        let delta = q[axis] - p[axis];
-        let far = beyond(offsets, axis, delta);
-        let (low, high) = if delta <= 0.0 { (offsets, far) } else { (far, offsets) };
-        if delta <= 0.0 || cell_distance(low) <= r2 {
-            self.range(lo, mid, q, low, r2, out);
+        let ([left, right], _) = self.children(mid, axis, q, offsets);
+        if cell_distance(left) <= r2 {
+            self.range(lo, mid, q, left, r2, out);
         }
-        if delta >= 0.0 || cell_distance(high) <= r2 {
-            self.range(mid + 1, hi, q, high, r2, out);
+        if cell_distance(right) <= r2 {
+            self.range(mid + 1, hi, q, right, r2, out);
         }
     }
-}
-
-/// The offsets of the cell beyond a split at `delta` from the query along `axis`: that axis's
-/// offset becomes the distance to the split line (the nearer bounds the cell had along it lie
-/// on the query's side).
-#[inline]
-fn beyond(mut offsets: [f64; 2], axis: usize, delta: f64) -> [f64; 2] {
-    offsets[axis] = delta.abs();
-    offsets
 }
 
 /// Squared distance from the query to a cell with these offsets.
@@ -145,7 +167,7 @@ fn cell_distance([dx, dy]: [f64; 2]) -> f64 {
 
 /// Splits `order` at its median along the axis of widest spread, recording the axis in
 /// `axes` (the same positions as `order`), then splits both halves.
-fn build(points: &[Point], order: &mut [u32], axes: &mut [u8]) {
+fn build(points: &[Point], order: &mut [u32], axes: &mut [u8], extremes: &mut [[f64; 2]]) {
     if order.is_empty() {
         return;
     }
@@ -157,15 +179,18 @@ fn build(points: &[Point], order: &mut [u32], axes: &mut [u8]) {
         hi - lo
     };
     let axis = usize::from(spread(1) > spread(0));
+    let key = |i: u32| points[i as usize][axis];
     let mid = order.len() / 2;
+    order.select_nth_unstable_by(mid, |&a, &b| key(a).total_cmp(&key(b)));
     axes[mid] = axis as u8;
-    order.select_nth_unstable_by(mid, |&a, &b| {
-        points[a as usize][axis].total_cmp(&points[b as usize][axis])
-    });
     let (left, right) = order.split_at_mut(mid);
+    let left_max = left.iter().map(|&i| key(i)).fold(f64::NEG_INFINITY, f64::max);
+    let right_min = right[1..].iter().map(|&i| key(i)).fold(f64::INFINITY, f64::min);
+    extremes[mid] = [left_max, right_min];
     let (left_axes, right_axes) = axes.split_at_mut(mid);
-    build(points, left, left_axes);
-    build(points, &mut right[1..], &mut right_axes[1..]);
+    let (left_extremes, right_extremes) = extremes.split_at_mut(mid);
+    build(points, left, left_axes, left_extremes);
+    build(points, &mut right[1..], &mut right_axes[1..], &mut right_extremes[1..]);
 }
 
 #[inline]
@@ -186,6 +211,29 @@ mod tests {
     thread_local! {
         /// Nodes visited by k-nearest searches on this thread.
         pub(super) static VISITS: Cell<usize> = const { Cell::new(0) };
+    }
+
+    /// Two rows, `y = 0` and `y = 1`, 10⁻⁴⁰ apart along each (a zigzag between them): with
+    /// equal keys on both sides of a split, a query on a row could prune neither side, and
+    /// HNN-CRUST took 293 s at 2.56·10⁵ points. Each subtree's nearest key bounds it now.
+    #[test]
+    fn points_on_two_lines_are_searched_in_few_nodes() {
+        let n = 4096u32;
+        let rows: Vec<Point> = (0..n).map(|i| [f64::from(i) * 1e-40, f64::from(i % 2)]).collect();
+        let tree = KdTree::new(&rows);
+        VISITS.with(|v| v.set(0));
+        for i in (0..n).step_by(16) {
+            let q = rows[i as usize];
+            let mut brute: Vec<(f64, u32)> =
+                (0..n).filter(|&j| j != i).map(|j| (sq(rows[j as usize], q), j)).collect();
+            brute.sort_by(|a, b| cmp(*a, *b));
+            assert_eq!(tree.nearest(q, 2, i), brute[..2].to_vec());
+            let mut got = Vec::new();
+            tree.within(q, 0.5, &mut got);
+            assert_eq!(got.len() as u32, n / 2, "the row of point {i}");
+        }
+        let per_query = VISITS.with(Cell::get) / (n as usize / 16);
+        assert!(per_query < 300, "{per_query} nodes visited per query, of {n}");
     }
 
     /// The medial points of a circle drawn with cubics crowd within 10⁻⁹ of its centre;
