@@ -166,7 +166,8 @@ fn cell_distance([dx, dy]: [f64; 2]) -> f64 {
 }
 
 /// Splits `order` at its median along the axis of widest spread, recording the axis in
-/// `axes` (the same positions as `order`), then splits both halves.
+/// `axes` and the halves' largest and smallest keys in `extremes` (the same positions as
+/// `order`), then splits both halves.
 fn build(points: &[Point], order: &mut [u32], axes: &mut [u8], extremes: &mut [[f64; 2]]) {
     if order.is_empty() {
         return;
