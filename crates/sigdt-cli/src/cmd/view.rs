@@ -11,7 +11,7 @@ use crate::input::{ground_truth, picture_title, Input};
 use crate::messages::UsageError;
 use crate::output::Output;
 use crate::progress::{size, thousands, Stages};
-use crate::view::{view_json, viewer_html, ViewData};
+use crate::view::{joined, view_json, viewer_html, ViewData};
 
 /// `sigdt view`.
 #[derive(Debug, Args)]
@@ -87,9 +87,14 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
         layers.push(("boundary", boundary));
     }
     layers.push(("result", &rec.edges));
-    let triangles = match &trace {
-        Some(trace) => trace.triangles.clone(),
-        None => dt.input_triangles(),
+    // The trace's triangles are the triangulation's; without a trace they are made here.
+    let made;
+    let triangles: &[[usize; 3]] = match &trace {
+        Some(trace) => &trace.triangles,
+        None => {
+            made = dt.input_triangles();
+            &made
+        }
     };
     let title = args.title.clone().unwrap_or_else(|| picture_title(&args.input, points.len()));
     let method = args.method.to_string();
@@ -99,7 +104,7 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
         status: rec.status.name(),
         points: &points,
         nn: &nn,
-        triangles: &triangles,
+        triangles,
         layers,
         gt: gt.as_deref(),
         trace: trace.as_ref(),
@@ -126,11 +131,6 @@ fn size_warning(path: &Path, bytes: usize, steps: bool) -> Option<String> {
             size(LARGE_PAGE_BYTES)
         )
     })
-}
-
-/// The result of a scoped thread; its panic, if any, goes on in this thread.
-fn joined<T>(handle: std::thread::ScopedJoinHandle<'_, T>) -> T {
-    handle.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
 }
 
 #[cfg(test)]

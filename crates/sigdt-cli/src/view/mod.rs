@@ -202,11 +202,13 @@ type Job<'a> = Box<dyn FnOnce() -> String + Send + 'a>;
 fn in_parallel(jobs: Vec<Job<'_>>) -> Vec<String> {
     std::thread::scope(|scope| {
         let running: Vec<_> = jobs.into_iter().map(|job| scope.spawn(job)).collect();
-        running
-            .into_iter()
-            .map(|job| job.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic)))
-            .collect()
+        running.into_iter().map(joined).collect()
     })
+}
+
+/// The result of a scoped thread; its panic, if any, goes on in this thread.
+pub fn joined<T>(handle: std::thread::ScopedJoinHandle<'_, T>) -> T {
+    handle.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic))
 }
 
 fn string(s: &mut String, text: &str) {
