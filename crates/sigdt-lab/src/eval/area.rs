@@ -20,7 +20,10 @@
 //! collinear or coincident points). Self loops are ignored.
 //!
 //! # Complexity
-//! O(m log m) for `m` edges (chains in linear time, the overlay by a sweep line).
+//! O((m + k) log m) for `m` edges whose rings cross in `k` points (chains in linear time,
+//! the overlay by a sweep line that splits every crossing): O(m log m) on curves, whose rings
+//! cross only where the result strays from the ground truth, and quadratic when the edges
+//! themselves cross everywhere (a random polygon).
 //!
 //! # References
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.

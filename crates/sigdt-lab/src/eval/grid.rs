@@ -3,15 +3,20 @@
 //! Each segment is cut into pieces no longer than a cell and listed in every cell its pieces'
 //! bounding boxes touch, in a compressed (CSR) layout. A query visits square rings of cells
 //! around the query point, nearest ring first, and stops once the next ring cannot hold
-//! anything closer than the caller's current bound. The cell side is about twice the mean
-//! segment length, enlarged so the grid has at most about four cells per segment (at most
-//! `2√m + 1` cells a side).
+//! anything closer than the caller's current bound. The cell side is that of about four cells
+//! per segment over the box (at most `2√m + 1` cells a side), enlarged so that the segments
+//! are cut into at most about 16 pieces each on average.
 //!
 //! # Complexity
-//! Build O(m log m + L / c) for `m` segments of total length `L` and cell side `c`. A query
-//! costs O(r² + k) for `r` rings and `k` listed segments visited: O(1) on curves sampled
-//! about evenly when the bound is a few segment lengths, and O(m) at worst (every cell once).
+//! Build O(m log m) for `m` segments (at most about `17 m` pieces). A query costs O(r² + k)
+//! for `r` rings and `k` listed segments visited: O(1) on curves sampled about evenly when
+//! the bound is a few segment lengths, the segments crossing a few cells among long random
+//! segments, and O(m) at worst (every cell once).
 use sigdt::Point;
+
+/// The most pieces a segment is cut into on average: bounds the build's memory when the
+/// segments are long against the box.
+const PIECES_PER_SEGMENT: f64 = 16.0;
 
 /// Segments `[p, q]` (a point is the segment `[p, p]`) bucketed into a uniform grid.
 pub(crate) struct SegmentGrid {
@@ -37,9 +42,11 @@ impl SegmentGrid {
         // (with a fixed lower bound of max(w, h) / 4096, a few segments far apart made
         // every query walk millions of empty cells: fuzzing finding 4). The cell is infinite
         // only when the extents or the total length overflow, and then one cell holds
-        // everything.
+        // everything. It is not tied to the mean segment length: long crossing segments (a
+        // random polygon) made cells as wide as the box, and every query read every segment.
         let area = w.sqrt() * h.sqrt() / (2.0 * m.sqrt());
-        let mut cell = (2.0 * total / m).max(area).max(w.max(h) / (2.0 * m.sqrt()));
+        let mut cell =
+            (total / (PIECES_PER_SEGMENT * m)).max(area).max(w.max(h) / (2.0 * m.sqrt()));
         if cell.is_nan() || cell <= 0.0 {
             cell = 1.0;
         }
@@ -184,5 +191,22 @@ mod tests {
         }
         assert_eq!(SegmentGrid::new(Vec::new()).nearest_distance([1.0, 2.0]), f64::INFINITY);
         assert_eq!(SegmentGrid::new(vec![[[1.0, 1.0]; 2]]).nearest_distance([4.0, 5.0]), 5.0);
+    }
+
+    #[test]
+    fn long_crossing_segments_spread_over_many_cells() {
+        // A random polygon of 2000 vertices in the unit square: segments half as long as
+        // the box. Cells as wide as twice the mean length held every segment in one cell.
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let vertices: Vec<Point> = (0..2000).map(|_| [next(), next()]).collect();
+        let segs: Vec<[Point; 2]> =
+            (0..2000).map(|i| [vertices[i], vertices[(i + 1) % 2000]]).collect();
+        let grid = SegmentGrid::new(segs);
+        let fullest = grid.start.windows(2).map(|w| w[1] - w[0]).max().unwrap();
+        assert!(fullest < 400, "a cell lists {fullest} of 2000 segments");
     }
 }
