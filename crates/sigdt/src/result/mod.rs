@@ -229,7 +229,7 @@ impl std::fmt::Display for Status {
             Status::Noisy => f.write_str("the edges zigzag: the points are too noisy or sparse"),
             Status::Crossing => f.write_str("some edges cross"),
             Status::Unfinished => {
-                f.write_str("stopped at the pass limit: undecided points are left out")
+                f.write_str("stopped at a pass or work limit: undecided points are left out")
             }
             Status::Collinear => f.write_str("all points are collinear: one open path"),
             Status::TooFewPoints => f.write_str("fewer than three distinct points"),
