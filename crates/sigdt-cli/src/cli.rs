@@ -102,6 +102,12 @@ pub struct Cli {
     /// numbers from 1, for example `--columns lon,lat` or `--columns 3,4`.
     #[arg(long, global = true, value_name = "X,Y")]
     pub columns: Option<crate::read::Columns>,
+    /// Threads for the data-parallel passes (sorting, nearest neighbours, the SIGDT test);
+    /// by default every core, or RAYON_NUM_THREADS when it is set. The output is the same,
+    /// byte for byte, at every thread count.
+    #[arg(long, global = true, value_name = "N",
+          value_parser = RangedU64ValueParser::<usize>::new().range(1..=1024))]
+    pub threads: Option<usize>,
 }
 
 /// Default of `--max-points`: 10^8 points (1.6 GB of coordinates).

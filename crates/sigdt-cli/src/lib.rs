@@ -56,20 +56,14 @@ fn run_command(args: impl IntoIterator<Item = OsString>) -> u8 {
     };
     let input = Input::new(cli.max_points, cli.columns.clone());
     output::remove_pending_on_signals();
-    let result = match cli.command {
-        Command::Reconstruct(args) => cmd::reconstruct::run(&args, &input),
-        Command::Graph(args) => cmd::graph::run(&args, &input),
-        Command::Bench(args) => cmd::bench::run(&args),
-        Command::Eval(args) => cmd::eval::run(&args, &input),
-        Command::Sample(args) => cmd::sample::run(&args),
-        Command::Perturb(args) => cmd::perturb::run(&args, &input),
-        Command::Sweep(args) => cmd::sweep::run(&args),
-        Command::Render(args) => cmd::render::run(&args, &input),
-        Command::Gallery(args) => cmd::gallery::run(&args),
-        Command::View(args) => cmd::view::run(&args, &input),
-        Command::Completions(args) => cmd::completions::completions(&args),
-        Command::Manpages(args) => cmd::completions::manpages(&args),
-        Command::BenchWorker(args) => cmd::bench_worker::run(&args),
+    let result = match cli.threads {
+        // A pool of its own, not the global one: the Python package runs this in process.
+        Some(threads) => rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map_err(anyhow::Error::from)
+            .and_then(|pool| pool.install(|| run_subcommand(cli.command, &input))),
+        None => run_subcommand(cli.command, &input),
     };
     match result {
         Ok(()) => 0,
@@ -80,6 +74,24 @@ fn run_command(args: impl IntoIterator<Item = OsString>) -> u8 {
                 1
             }
         },
+    }
+}
+
+fn run_subcommand(command: Command, input: &Input) -> anyhow::Result<()> {
+    match command {
+        Command::Reconstruct(args) => cmd::reconstruct::run(&args, input),
+        Command::Graph(args) => cmd::graph::run(&args, input),
+        Command::Bench(args) => cmd::bench::run(&args),
+        Command::Eval(args) => cmd::eval::run(&args, input),
+        Command::Sample(args) => cmd::sample::run(&args),
+        Command::Perturb(args) => cmd::perturb::run(&args, input),
+        Command::Sweep(args) => cmd::sweep::run(&args),
+        Command::Render(args) => cmd::render::run(&args, input),
+        Command::Gallery(args) => cmd::gallery::run(&args),
+        Command::View(args) => cmd::view::run(&args, input),
+        Command::Completions(args) => cmd::completions::completions(&args),
+        Command::Manpages(args) => cmd::completions::manpages(&args),
+        Command::BenchWorker(args) => cmd::bench_worker::run(&args),
     }
 }
 

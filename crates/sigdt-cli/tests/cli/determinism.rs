@@ -28,3 +28,25 @@ fn repeated_runs_give_byte_identical_output() {
         }
     }
 }
+
+#[test]
+fn every_thread_count_gives_the_same_output() {
+    // Large enough for the data-parallel passes to split their work (a noisy closed curve).
+    let dir = tempdir();
+    let points: Vec<[f64; 2]> = (0..20_000)
+        .map(|i| {
+            let t = i as f64 * 0.000_314_159_265_358_979_3;
+            let r = 1.0 + 0.2 * (5.0 * t).sin() + 1e-4 * ((i * 7919 % 101) as f64 / 101.0);
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect();
+    write_points(dir.path(), "curve.xy", &points);
+    let default = sigdt_in(dir.path(), &["reconstruct", "curve.xy"], None);
+    default.expect(0);
+    for threads in ["1", "2", "3"] {
+        let run = sigdt_in(dir.path(), &["--threads", threads, "reconstruct", "curve.xy"], None);
+        run.expect(0).stdout_is(&default.stdout);
+    }
+    // A count of 0 is a usage error.
+    sigdt_in(dir.path(), &["reconstruct", "curve.xy", "--threads", "0"], None).expect(2);
+}
