@@ -37,7 +37,8 @@ fn reconstruct<'py>(
     let options = options(method, leaf_elimination)?;
     let pts = convert::points(&points)?;
     let n = pts.len();
-    let work = move |_: &AtomicBool| guarded(|| sigdt::reconstruct(&pts, &options));
+    // The copy is the call's own: freed once triangulated.
+    let work = move |_: &AtomicBool| guarded(move || sigdt::reconstruct_owned(pts, &options));
     let rec = interruptible(py, n, work)?.map_err(InternalError::new_err)?.map_err(err)?;
     convert::reconstruction(py, &rec)
 }

@@ -44,7 +44,8 @@ pub use delaunay::Triangulation;
 pub use error::{Error, Result};
 pub use geometry::{Edge, Point};
 pub use method::{
-    reconstruct, reconstruct_on, reconstruct_traced, reconstruct_traced_on, Method, Options,
+    reconstruct, reconstruct_on, reconstruct_owned, reconstruct_traced, reconstruct_traced_on,
+    Method, Options,
 };
 pub use proximity::{nearest_neighbour_distances, proximity_graph, proximity_graph_on, GraphKind};
 pub use result::{LeftOut, LeftOutReason, Polygon, Reconstruction, Stats, Status, Vertices};

@@ -149,7 +149,24 @@ impl Default for Options {
 /// [`NonFinite`](crate::Error::NonFinite), [`CoordinateRange`](crate::Error::CoordinateRange)
 /// and [`TooManyPoints`](crate::Error::TooManyPoints), from [`Triangulation::new`].
 pub fn reconstruct(points: &[Point], options: &Options) -> Result<Reconstruction> {
-    let dt = Triangulation::new(points)?;
+    reconstruct_triangulation(Triangulation::new(points)?, options)
+}
+
+/// [`reconstruct`] on points it owns: the same result, with less memory at its peak, since
+/// the points are freed once copied into the triangulation and the triangulation before
+/// the result is built (`docs/algorithms.md` §7.3). For callers that do not need the
+/// points afterwards, such as the command line writing edges.
+///
+/// # Errors
+/// As [`reconstruct`].
+pub fn reconstruct_owned(points: Vec<Point>, options: &Options) -> Result<Reconstruction> {
+    reconstruct_triangulation(Triangulation::from_vec(points)?, options)
+}
+
+fn reconstruct_triangulation(dt: Triangulation, options: &Options) -> Result<Reconstruction> {
+    if options.method == Method::SigConnect2d {
+        return Ok(sig_connect2d::sig_connect2d_owning(dt, options.leaf_elimination));
+    }
     Ok(reconstruct_on(&dt, options))
 }
 

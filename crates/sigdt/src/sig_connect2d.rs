@@ -19,7 +19,7 @@
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. PG 2022.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
-use crate::connect::inflate_and_sculpt;
+use crate::connect::{inflate_and_sculpt, outline};
 use crate::delaunay::Triangulation;
 use crate::graph::EdgeMask;
 use crate::proximity::{
@@ -34,6 +34,21 @@ pub(crate) fn sig_connect2d_on(dt: &Triangulation, leaf_elimination: bool) -> Re
     }
     let (graph, leaf_edges_added) = initial_graph(dt, leaf_elimination);
     inflate_and_sculpt(dt, &graph, leaf_edges_added)
+}
+
+/// [`sig_connect2d_on`] on a triangulation it owns: the triangulation is freed, but for
+/// its input indices, before the result is built, which lowers the peak memory of
+/// [`reconstruct`](crate::reconstruct()) by about a fifth. The same result.
+pub(crate) fn sig_connect2d_owning(dt: Triangulation, leaf_elimination: bool) -> Reconstruction {
+    if let Some(result) = degenerate_result(&dt) {
+        return result;
+    }
+    let (outline, _) = {
+        let (graph, leaf_edges_added) = initial_graph(&dt, leaf_elimination);
+        outline(&dt, &graph, leaf_edges_added, false)
+    };
+    let (input_index, duplicates) = dt.into_input_indices();
+    outline.into_reconstruction(&input_index, duplicates)
 }
 
 /// The graph inflating starts from, SIGDT or (with leaf elimination) SIGDT2, and the number

@@ -64,10 +64,15 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
             }
         },
     };
-    let points = input.points(&args.input)?;
+    let mut points = input.points(&args.input)?;
     let options = Options { method: args.method, leaf_elimination: !args.no_leaf_elimination };
     let start = Instant::now();
-    let rec = sigdt::reconstruct(&points, &options)?;
+    // Edges and loops are indices: the points can go once triangulated (less peak memory).
+    let indices_only = matches!(format, OutputFormat::Text(TextFormat::Edges | TextFormat::Loops));
+    let rec = match indices_only {
+        true => sigdt::reconstruct_owned(std::mem::take(&mut points), &options)?,
+        false => sigdt::reconstruct(&points, &options)?,
+    };
     let elapsed = start.elapsed().as_secs_f64() * 1e3;
     if let (Vertices::New(_), OutputFormat::Text(TextFormat::Edges | TextFormat::Loops)) =
         (&rec.vertices, format)

@@ -23,6 +23,7 @@
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
+use super::star_counts::{StarCounts, StarTable};
 use super::trace::{Phase, Step, Trace};
 use crate::delaunay::{prev, Triangulation, EMPTY};
 use crate::graph::{EdgeMask, UnionFind};
@@ -38,29 +39,6 @@ pub enum VertexClass {
     Interior,
 }
 
-/// The edges at a vertex that decide its class (module docs).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-struct StarCounts {
-    /// Edges whose two sides have different labels (`T`).
-    transitions: u32,
-    /// Boundary edges with both sides exterior (`D`).
-    dangling: u32,
-    /// Edges with an exterior side (the outside of the hull counts): none means interior.
-    exterior: u32,
-}
-
-impl StarCounts {
-    fn class(self) -> VertexClass {
-        if self.exterior == 0 {
-            VertexClass::Interior
-        } else if self.transitions == 2 && self.dangling == 0 {
-            VertexClass::Manifold
-        } else {
-            VertexClass::NonManifold
-        }
-    }
-}
-
 /// Labels, boundary and classes of one run.
 pub struct Boundary<'a> {
     /// The triangulation.
@@ -73,7 +51,7 @@ pub struct Boundary<'a> {
     pub class: Vec<VertexClass>,
     /// What the class of every vertex is read from, kept current by [`Boundary::set_inside`]
     /// and [`Boundary::set_edge`].
-    star: Vec<StarCounts>,
+    star: StarTable,
     /// Connectivity of `B` (an over-approximation; see `pocket`);
     /// built by [`Boundary::track_components`] when inflating has work to do.
     pub components: UnionFind,
@@ -115,7 +93,7 @@ impl<'a> Boundary<'a> {
             inside,
             edges: EdgeMask::new(dt),
             class: vec![VertexClass::Manifold; dt.num_vertices()],
-            star: vec![StarCounts::default(); dt.num_vertices()],
+            star: StarTable::new(dt),
             components: UnionFind::new(0),
             non_manifold: 0,
             interior: 0,
@@ -151,7 +129,7 @@ impl<'a> Boundary<'a> {
             self.tally(h, true);
         }
         for v in 0..dt.num_vertices() {
-            let class = self.star[v].class();
+            let class = self.star.get(v as u32).class();
             debug_assert_eq!(class, self.classify_by_star(v as u32));
             self.class[v] = class;
             self.count(class, 1);
@@ -172,16 +150,7 @@ impl<'a> Boundary<'a> {
     fn tally(&mut self, h: u32, add: bool) {
         let c = self.contribution(h);
         for v in [self.dt.origin(h), self.dt.dest(h)] {
-            let star = &mut self.star[v as usize];
-            if add {
-                star.transitions += c.transitions;
-                star.dangling += c.dangling;
-                star.exterior += c.exterior;
-            } else {
-                star.transitions -= c.transitions;
-                star.dangling -= c.dangling;
-                star.exterior -= c.exterior;
-            }
+            self.star.update(v, c, add);
         }
     }
 
@@ -230,6 +199,12 @@ impl<'a> Boundary<'a> {
         self.tally(h, true);
     }
 
+    /// The labels and the boundary edges, all the loops are read from; the rest (the counts
+    /// and classes, a sixth of the peak memory) is freed here.
+    pub(crate) fn into_labels_and_edges(self) -> (Vec<bool>, EdgeMask) {
+        (self.inside, self.edges)
+    }
+
     /// Whether the triangle on the left of `h` is interior.
     #[inline]
     pub fn left_is_in(&self, h: u32) -> bool {
@@ -246,7 +221,7 @@ impl<'a> Boundary<'a> {
 
     /// The class of `v` (O(1)).
     pub fn classify(&self, v: u32) -> VertexClass {
-        self.star[v as usize].class()
+        self.star.get(v).class()
     }
 
     /// Panics unless every vertex's class and counts are those its star gives: the check of

@@ -13,13 +13,15 @@ pub(crate) mod inflate;
 mod pocket;
 mod queue;
 pub(crate) mod sculpt;
+mod star_counts;
 pub(crate) mod trace;
 
 use crate::delaunay::Triangulation;
+use crate::geometry::Edge;
 use crate::graph::EdgeMask;
 use crate::result::{inside_left_out, Reconstruction, Stats, Status, Vertices};
 use boundary::Boundary;
-use extract::{loop_edges, loops};
+use extract::{loop_edges, vertex_loops, VertexLoops};
 use inflate::inflate;
 use sculpt::sculpt;
 use trace::Trace;
@@ -42,6 +44,29 @@ pub(crate) fn inflate_and_sculpt_traced(
     leaf_edges_added: usize,
     trace: bool,
 ) -> (Reconstruction, Option<Trace>) {
+    let (outline, trace) = outline(dt, graph, leaf_edges_added, trace);
+    let rec = outline.into_reconstruction(dt.input_indices(), dt.duplicates().to_vec());
+    (rec, trace)
+}
+
+/// What inflating and sculpting leave, in vertices: the loops, the vertices still inside and
+/// the counts. The boundary is freed once it is read, so the result (24 bytes a point as
+/// input indices) is built without it, and without the triangulation when its owner frees
+/// it first ([`reconstruct`](crate::reconstruct())).
+pub(crate) struct Outline {
+    loops: VertexLoops,
+    inside: Vec<u32>,
+    stats: Stats,
+}
+
+/// Inflates and sculpts the boundary of `graph` on a proper triangulation (see
+/// [`inflate_and_sculpt_traced`]) and reads the outline off it.
+pub(crate) fn outline(
+    dt: &Triangulation,
+    graph: &EdgeMask,
+    leaf_edges_added: usize,
+    trace: bool,
+) -> (Outline, Option<Trace>) {
     let mut stats = Stats {
         points: dt.input_len(),
         distinct_points: dt.num_vertices(),
@@ -58,29 +83,44 @@ pub(crate) fn inflate_and_sculpt_traced(
         trace.steps = bd.trace.take().unwrap_or_default();
         trace.inflated_at = inflated_at;
     }
-    let loops = loops(&bd);
-    let mut inside: Vec<usize> =
-        bd.interior_vertices().into_iter().map(|v| dt.input_index(v)).collect();
-    inside.sort_unstable();
-    let left_out = inside_left_out(&inside);
-    let status = if !inside.is_empty() {
-        Status::SculptingStuck { left_out: inside }
-    } else if loops.len() == 1 {
-        Status::Polygon
-    } else {
-        Status::Polygons
-    };
-    let rec = Reconstruction {
-        edges: loop_edges(&loops, dt.input_len()),
-        loops,
-        paths: Vec::new(),
-        status,
-        duplicates: dt.duplicates().to_vec(),
-        left_out,
-        vertices: Vertices::Input,
-        stats,
-    };
-    (rec, trace)
+    let inside_vertices = bd.interior_vertices();
+    let (inside, edges) = bd.into_labels_and_edges();
+    let loops = vertex_loops(dt, &inside, &edges);
+    (Outline { loops, inside: inside_vertices, stats }, trace)
+}
+
+impl Outline {
+    /// The result: the loops and the points left inside as input indices (`input_index`
+    /// of every vertex), the edges of the loops, and the input's `duplicates`.
+    pub(crate) fn into_reconstruction(
+        self,
+        input_index: &[u32],
+        duplicates: Vec<Edge>,
+    ) -> Reconstruction {
+        let loops = self.loops.input_loops(input_index);
+        drop(self.loops);
+        let mut inside: Vec<usize> =
+            self.inside.iter().map(|&v| input_index[v as usize] as usize).collect();
+        inside.sort_unstable();
+        let left_out = inside_left_out(&inside);
+        let status = if !inside.is_empty() {
+            Status::SculptingStuck { left_out: inside }
+        } else if loops.len() == 1 {
+            Status::Polygon
+        } else {
+            Status::Polygons
+        };
+        Reconstruction {
+            edges: loop_edges(&loops, self.stats.points),
+            loops,
+            paths: Vec::new(),
+            status,
+            duplicates,
+            left_out,
+            vertices: Vertices::Input,
+            stats: self.stats,
+        }
+    }
 }
 
 #[cfg(test)]

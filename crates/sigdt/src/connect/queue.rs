@@ -40,6 +40,13 @@ pub struct CandidateQueue {
     heap: BinaryHeap<Candidate>,
 }
 
+impl From<Vec<Candidate>> for CandidateQueue {
+    /// The queue of `candidates`, in linear time.
+    fn from(candidates: Vec<Candidate>) -> CandidateQueue {
+        CandidateQueue { heap: BinaryHeap::from(candidates) }
+    }
+}
+
 impl CandidateQueue {
     /// Adds a candidate.
     #[inline]
@@ -64,6 +71,10 @@ mod tests {
         q.push(5, 1.0);
         q.push(3, 1.0);
         q.push(9, -2.0);
+        let order: Vec<u32> = std::iter::from_fn(|| q.pop()).map(|c| c.t).collect();
+        assert_eq!(order, vec![9, 3, 5]);
+        let built = [(5, 1.0), (3, 1.0), (9, -2.0)].map(|(t, cost)| Candidate { cost, t });
+        let mut q = CandidateQueue::from(built.to_vec());
         let order: Vec<u32> = std::iter::from_fn(|| q.pop()).map(|c| c.t).collect();
         assert_eq!(order, vec![9, 3, 5]);
     }

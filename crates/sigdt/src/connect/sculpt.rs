@@ -26,7 +26,7 @@
 //! [OM13]: https://doi.org/10.1111/cgf.12227
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 use super::boundary::{Boundary, VertexClass};
-use super::queue::CandidateQueue;
+use super::queue::{Candidate, CandidateQueue};
 use super::trace::Phase;
 use crate::delaunay::{next, prev, EMPTY};
 use crate::result::Stats;
@@ -34,12 +34,19 @@ use crate::result::Stats;
 /// Runs sculpting until no interior vertex is left or no candidate remains.
 pub fn sculpt(bd: &mut Boundary<'_>, stats: &mut Stats) {
     stats.interior_before_sculpting = bd.interior;
-    let mut queue = CandidateQueue::default();
-    for v in bd.interior_vertices() {
-        for h in bd.dt.outgoing(v) {
-            push_if_candidate(bd, &mut queue, h / 3);
-        }
+    // Every candidate once, in one heap built in linear time: a candidate has one boundary
+    // edge, so there are at most as many as boundary edges. (Pushing the triangles around
+    // each interior vertex pushed most of them three times, and the queue was the largest
+    // array alive.) The order of the pops is that of (cost, triangle), whatever the order of
+    // the pushes.
+    let mut initial = Vec::with_capacity(bd.edges.len());
+    if bd.interior > 0 {
+        initial.extend(
+            (0..bd.dt.num_triangles() as u32)
+                .filter_map(|t| candidate(bd, t).map(|(_, cost)| Candidate { cost, t })),
+        );
     }
+    let mut queue = CandidateQueue::from(initial);
     while bd.interior > 0 {
         let Some(c) = queue.pop() else { break };
         let Some((ab, cost)) = candidate(bd, c.t) else { continue };

@@ -7,6 +7,7 @@ use super::{Shape, Triangulation, EMPTY};
 use crate::error::{Error, Result};
 use crate::geometry::Edge;
 use crate::geometry::{orient2d, Point};
+use std::borrow::Cow;
 
 impl Triangulation {
     /// Triangulates `points` (`docs/algorithms.md` §0.1–0.2).
@@ -15,7 +16,17 @@ impl Triangulation {
     /// [`Error::NonFinite`] for NaN or infinite coordinates, [`Error::CoordinateRange`] when
     /// the coordinates span more than about 2^172, [`Error::TooManyPoints`] past `u32`.
     pub fn new(points: &[Point]) -> Result<Triangulation> {
-        let scaling = Scaling::for_points(points)?;
+        Triangulation::build(Cow::Borrowed(points))
+    }
+
+    /// [`new`](Self::new) on points it owns, which it frees once they are copied into
+    /// insertion order, before the triangulation's arrays are allocated.
+    pub(crate) fn from_vec(points: Vec<Point>) -> Result<Triangulation> {
+        Triangulation::build(Cow::Owned(points))
+    }
+
+    fn build(points: Cow<'_, [Point]>) -> Result<Triangulation> {
+        let scaling = Scaling::for_points(&points)?;
         let scaled = |i: u32| scaling.apply(points[i as usize]);
         match first_triangle(points.len(), scaled) {
             Some(seed) => proper(points, scaling, seed),
@@ -73,7 +84,7 @@ fn on_a_line(n: usize, p: impl Fn(u32) -> Point, scaling: Scaling) -> Triangulat
     }
 }
 
-fn proper(input: &[Point], scaling: Scaling, seed: [u32; 3]) -> Result<Triangulation> {
+fn proper(input: Cow<'_, [Point]>, scaling: Scaling, seed: [u32; 3]) -> Result<Triangulation> {
     let n = input.len();
     // Half-edges are numbered in `u32` (`EMPTY` excluded): at most 6 per point.
     let max = EMPTY as usize / 6;
@@ -87,6 +98,7 @@ fn proper(input: &[Point], scaling: Scaling, seed: [u32; 3]) -> Result<Triangula
     brio_order(|i| scaling.apply(input[i as usize]), &mut order[3..]);
     // Reorder once: the points in insertion order, read sequentially from here on.
     let points = crate::parallel::map_slice(&order, |&i| scaling.apply(input[i as usize]));
+    drop(input);
     let mut dt = Dt::new(points);
     // `order` becomes `input_index` in place: vertex `v` is written at `v <= k`.
     let mut input_index = order;

@@ -120,6 +120,17 @@ impl Triangulation {
         self.scaling.unapply(p)
     }
 
+    /// The input index of every vertex ([`input_index`](Self::input_index)).
+    pub(crate) fn input_indices(&self) -> &[u32] {
+        &self.input_index
+    }
+
+    /// What a result needs of the triangulation once inflating and sculpting are done: the
+    /// input index of every vertex and the duplicates; the rest is freed.
+    pub(crate) fn into_input_indices(self) -> (Vec<u32>, Vec<Edge>) {
+        (self.input_index, self.duplicates)
+    }
+
     /// Index into the caller's points of vertex `v` (the lowest among exact duplicates).
     #[inline]
     pub fn input_index(&self, v: u32) -> usize {

@@ -1,41 +1,49 @@
-//! A set of Delaunay edges with one flag per half-edge.
+//! A set of Delaunay edges with one bit per half-edge.
 use crate::delaunay::{Triangulation, EMPTY};
 
-/// A set of Delaunay edges, one flag per half-edge (both halves of an edge always agree).
+/// A set of Delaunay edges, one bit per half-edge (both halves of an edge always agree):
+/// the graph and the boundary are alive together through inflating and sculpting, and bits
+/// keep them at under two bytes a point.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct EdgeMask {
-    on: Vec<bool>,
+    bits: Vec<u64>,
     count: usize,
 }
 
 impl EdgeMask {
     /// The empty set for `dt`.
     pub fn new(dt: &Triangulation) -> EdgeMask {
-        EdgeMask { on: vec![false; dt.num_halfedges()], count: 0 }
+        EdgeMask { bits: vec![0; dt.num_halfedges().div_ceil(64)], count: 0 }
     }
 
-    /// The set whose flags are `on` (one per half-edge, both halves of an edge equal),
-    /// holding `count` edges.
-    pub(crate) fn from_flags(on: Vec<bool>, count: usize) -> EdgeMask {
-        EdgeMask { on, count }
+    /// The set whose bits are `words` (half-edge `h` is bit `h % 64` of word `h / 64`, both
+    /// halves of an edge equal, no bit past the last half-edge), holding `count` edges.
+    pub(crate) fn from_words(words: Vec<u64>, count: usize) -> EdgeMask {
+        EdgeMask { bits: words, count }
     }
 
     /// Whether the edge of half-edge `h` is in the set.
     #[inline]
     pub fn contains(&self, h: u32) -> bool {
-        self.on[h as usize]
+        self.bits[(h / 64) as usize] >> (h % 64) & 1 == 1
+    }
+
+    #[inline]
+    fn put(&mut self, h: u32, value: bool) {
+        let (word, bit) = ((h / 64) as usize, h % 64);
+        self.bits[word] = self.bits[word] & !(1 << bit) | u64::from(value) << bit;
     }
 
     /// Puts the edge of `h` in (`true`) or out of (`false`) the set.
     #[inline]
     pub fn set(&mut self, dt: &Triangulation, h: u32, value: bool) {
-        if self.on[h as usize] != value {
+        if self.contains(h) != value {
             self.count = if value { self.count + 1 } else { self.count - 1 };
         }
-        self.on[h as usize] = value;
+        self.put(h, value);
         let t = dt.twin(h);
         if t != EMPTY {
-            self.on[t as usize] = value;
+            self.put(t, value);
         }
     }
 
@@ -85,5 +93,32 @@ mod tests {
         }
         assert_eq!(mask.len(), 5);
         assert_eq!(mask.edges(&dt).len(), 5);
+        for h in (0..dt.num_halfedges() as u32).step_by(2) {
+            mask.set(&dt, h, false);
+        }
+        assert_eq!(mask.len(), dt.edge_halfedges().filter(|&h| mask.contains(h)).count());
+        assert!(mask.len() < 5);
+        assert_eq!(EdgeMask::from_words(mask.bits.clone(), mask.len()), mask);
+    }
+
+    #[test]
+    fn bits_past_a_word() {
+        // 130 half-edges: three words, the last partly used.
+        let mut dt_points = Vec::new();
+        for i in 0..30 {
+            dt_points.push([i as f64, (i * i % 7) as f64]);
+        }
+        let dt = Triangulation::new(&dt_points).unwrap();
+        assert!(dt.num_halfedges() > 128);
+        let mut mask = EdgeMask::new(&dt);
+        let last = dt.num_halfedges() as u32 - 1;
+        for h in [0, 63, 64, 127, 128, last] {
+            mask.set(&dt, h, true);
+        }
+        for h in 0..=last {
+            let twin = dt.twin(h);
+            let on = [0, 63, 64, 127, 128, last].iter().any(|&s| s == h || dt.twin(s) == h);
+            assert_eq!(mask.contains(h), on, "half-edge {h} (twin {twin})");
+        }
     }
 }

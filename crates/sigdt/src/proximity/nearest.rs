@@ -33,7 +33,10 @@ pub fn nearest_neighbour_distances(dt: &Triangulation, points: &[Point]) -> Vec<
 pub(crate) fn nearest_vertex_distances(dt: &Triangulation) -> Vec<f64> {
     // Minimum of squared lengths, then one square root per vertex: sqrt is monotone and
     // correctly rounded, so this equals the minimum of the lengths.
-    nearest(dt).into_iter().map(|(len2, _)| len2.sqrt()).collect()
+    let mut r: Vec<f64> = nearest(dt).into_iter().map(|(len2, _)| len2.sqrt()).collect();
+    // The collect reuses the pairs' allocation, twice the size needed.
+    r.shrink_to_fit();
+    r
 }
 
 /// Per vertex: the squared distance to its nearest other vertex and that vertex (ties to the

@@ -64,17 +64,24 @@ pub(crate) fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
         }
         return (mask, degree);
     }
-    let on = crate::parallel::map_range(dt.num_halfedges(), |h| {
-        let h = h as u32;
+    let is_sig = |h: u32| {
         let (a, b) = (dt.origin(h), dt.dest(h));
         let reach = (r[a as usize] + r[b as usize]) * (1.0 + TIE_SLACK);
         squared_distance(dt.point(a), dt.point(b)) <= reach * reach
+    };
+    // 64 half-edges a task, written straight into the mask's words.
+    let halfedges = dt.num_halfedges();
+    let words = crate::parallel::map_range(halfedges.div_ceil(64), |w| {
+        (64 * w..(64 * w + 64).min(halfedges))
+            .rev()
+            .fold(0u64, |word, h| word << 1 | u64::from(is_sig(h as u32)))
     });
     let degree = crate::parallel::map_range(dt.num_vertices(), |v| {
-        dt.incident(v as u32).filter(|&h| on[h as usize]).count() as u32
+        dt.incident(v as u32).filter(|&h| words[h as usize / 64] >> (h % 64) & 1 == 1).count()
+            as u32
     });
     let count = degree.iter().map(|&d| d as usize).sum::<usize>() / 2;
-    (EdgeMask::from_flags(on, count), degree)
+    (EdgeMask::from_words(words, count), degree)
 }
 
 /// The SIGDT edges as sorted input-index pairs; for collinear input, the SIG-conforming
