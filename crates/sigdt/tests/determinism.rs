@@ -2,7 +2,10 @@
 //! whichever thread computes it. Inputs include exact ties (a grid, exactly cocircular
 //! points, duplicates), where the answer depends only on tie-breaking by index.
 use sigdt::samplers::{random_closed_curve, spiral_band, Rng};
-use sigdt::{reconstruct, Method, Options, Point, Reconstruction};
+use sigdt::{
+    reconstruct, reconstruct_on, reconstruct_owned, Method, Options, Point, Reconstruction,
+    Triangulation,
+};
 
 /// Smaller inputs in debug builds, to keep `cargo test` quick.
 fn scale(release: usize, debug: usize) -> usize {
@@ -67,6 +70,23 @@ fn repeated_runs_are_byte_identical() {
         let first = bytes(&points, method);
         for _ in 0..2 {
             assert!(bytes(&points, method) == first, "{name}, {method}: a rerun differs");
+        }
+    }
+}
+
+#[test]
+fn owned_points_and_a_shared_triangulation_give_the_same_result() {
+    // `reconstruct` frees its triangulation before building SIG-CONNECT2D's result,
+    // `reconstruct_owned` frees the points too, `reconstruct_on` does neither.
+    for (name, points, method) in jobs() {
+        for leaf_elimination in [true, false] {
+            let options = Options { method, leaf_elimination };
+            let borrowed = format!("{:?}", reconstruct(&points, &options).unwrap());
+            let owned = format!("{:?}", reconstruct_owned(points.clone(), &options).unwrap());
+            let dt = Triangulation::new(&points).unwrap();
+            let shared = format!("{:?}", reconstruct_on(&dt, &options));
+            assert!(owned == borrowed, "{name}, {method}: reconstruct_owned differs");
+            assert!(shared == borrowed, "{name}, {method}: reconstruct_on differs");
         }
     }
 }
