@@ -199,8 +199,8 @@ impl<'a> Boundary<'a> {
         self.tally(h, true);
     }
 
-    /// The labels and the boundary edges, all the loops are read from; the rest (the counts
-    /// and classes, a sixth of the peak memory) is freed here.
+    /// The labels and the boundary edges, all the loops are read from; the rest (the counts,
+    /// classes and stamps) is freed here, before the loops are.
     pub(crate) fn into_labels_and_edges(self) -> (Vec<bool>, EdgeMask) {
         (self.inside, self.edges)
     }

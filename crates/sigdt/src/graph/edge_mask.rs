@@ -103,7 +103,7 @@ mod tests {
 
     #[test]
     fn bits_past_a_word() {
-        // 130 half-edges: three words, the last partly used.
+        // More than 128 half-edges: three words or more, the last partly used.
         let mut dt_points = Vec::new();
         for i in 0..30 {
             dt_points.push([i as f64, (i * i % 7) as f64]);
