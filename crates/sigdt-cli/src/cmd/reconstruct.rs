@@ -74,9 +74,7 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         false => sigdt::reconstruct(&points, &options)?,
     };
     let elapsed = start.elapsed().as_secs_f64() * 1e3;
-    if let (Vertices::New(_), OutputFormat::Text(TextFormat::Edges | TextFormat::Loops)) =
-        (&rec.vertices, format)
-    {
+    if indices_only && matches!(rec.vertices, Vertices::New(_)) {
         // Indices into vertices the user never sees would be a silent wrong answer.
         bail!(
             "{} places vertices of its own, which --format {format} cannot show: \

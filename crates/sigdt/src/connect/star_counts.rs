@@ -22,6 +22,16 @@ pub(crate) struct StarCounts {
 }
 
 impl StarCounts {
+    /// Adds `c` to every count (`add`), or takes it away.
+    fn apply(&mut self, c: StarCounts, add: bool) {
+        let step = |count: &mut u32, delta: u32| {
+            *count = if add { *count + delta } else { *count - delta };
+        };
+        step(&mut self.transitions, c.transitions);
+        step(&mut self.dangling, c.dangling);
+        step(&mut self.exterior, c.exterior);
+    }
+
     pub(crate) fn class(self) -> VertexClass {
         if self.exterior == 0 {
             VertexClass::Interior
@@ -79,12 +89,7 @@ impl StarTable {
         let counts = &mut self.small[v as usize];
         if counts[0] == ESCAPE {
             let big = self.large.get_mut(&v).expect("an escaped vertex is in the side table");
-            for (count, delta) in [&mut big.transitions, &mut big.dangling, &mut big.exterior]
-                .into_iter()
-                .zip([c.transitions, c.dangling, c.exterior])
-            {
-                *count = if add { *count + delta } else { *count - delta };
-            }
+            big.apply(c, add);
             return;
         }
         for (count, delta) in counts.iter_mut().zip([c.transitions, c.dangling, c.exterior]) {

@@ -10,6 +10,13 @@ pub struct EdgeMask {
     count: usize,
 }
 
+/// Bit `h` of `words` (half-edge `h` is bit `h % 64` of word `h / 64`), the layout of
+/// [`EdgeMask`] and of [`EdgeMask::from_words`]'s argument.
+#[inline]
+pub(crate) fn word_bit(words: &[u64], h: u32) -> bool {
+    words[(h / 64) as usize] >> (h % 64) & 1 == 1
+}
+
 impl EdgeMask {
     /// The empty set for `dt`.
     pub fn new(dt: &Triangulation) -> EdgeMask {
@@ -25,7 +32,7 @@ impl EdgeMask {
     /// Whether the edge of half-edge `h` is in the set.
     #[inline]
     pub fn contains(&self, h: u32) -> bool {
-        self.bits[(h / 64) as usize] >> (h % 64) & 1 == 1
+        word_bit(&self.bits, h)
     }
 
     #[inline]

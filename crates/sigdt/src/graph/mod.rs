@@ -6,5 +6,6 @@ mod edge_mask;
 mod union_find;
 
 pub use chains::{chains, Chain};
+pub(crate) use edge_mask::word_bit;
 pub use edge_mask::EdgeMask;
 pub use union_find::UnionFind;

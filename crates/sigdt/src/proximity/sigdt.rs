@@ -23,6 +23,7 @@ use super::nearest::nearest_vertex_distances;
 use crate::delaunay::{Shape, Triangulation};
 use crate::geometry::Edge;
 use crate::geometry::{distance, squared_distance};
+use crate::graph::word_bit;
 use crate::graph::EdgeMask;
 
 /// Relative slack of the SIG test: `|uv| <= (r(u) + r(v)) · (1 + TIE_SLACK)`.
@@ -77,8 +78,7 @@ pub(crate) fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
             .fold(0u64, |word, h| word << 1 | u64::from(is_sig(h as u32)))
     });
     let degree = crate::parallel::map_range(dt.num_vertices(), |v| {
-        dt.incident(v as u32).filter(|&h| words[h as usize / 64] >> (h % 64) & 1 == 1).count()
-            as u32
+        dt.incident(v as u32).filter(|&h| word_bit(&words, h)).count() as u32
     });
     let count = degree.iter().map(|&d| d as usize).sum::<usize>() / 2;
     (EdgeMask::from_words(words, count), degree)
