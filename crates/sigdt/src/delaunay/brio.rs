@@ -100,25 +100,53 @@ fn hilbert_key(p: [f64; 2], bbox: &BoundingBox) -> u32 {
     hilbert_index(cell(0), cell(1))
 }
 
-/// Position of cell `(x, y)` along the Hilbert curve over a 2^16 × 2^16 grid.
-fn hilbert_index(mut x: u32, mut y: u32) -> u32 {
-    let n = 1u32 << HILBERT_BITS;
-    let mut d = 0u32;
-    let mut s = n / 2;
-    while s > 0 {
-        let rx = u32::from(x & s > 0);
-        let ry = u32::from(y & s > 0);
-        d += s * s * ((3 * rx) ^ ry);
-        if ry == 0 {
-            if rx == 1 {
-                x = n - 1 - x;
-                y = n - 1 - y;
-            }
-            std::mem::swap(&mut x, &mut y);
-        }
-        s /= 2;
+/// Position of cell `(x, y)` along the Hilbert curve over a 2^16 × 2^16 grid, four levels
+/// (a nibble of `x` and of `y`) per step through [`HILBERT_STEPS`].
+fn hilbert_index(x: u32, y: u32) -> u32 {
+    let mut d = 0;
+    let mut state = 0;
+    for shift in [12, 8, 4, 0] {
+        let nibbles = ((x >> shift) & 15) << 4 | ((y >> shift) & 15);
+        let step = HILBERT_STEPS[state][nibbles as usize];
+        d = d << 8 | u32::from(step & 0xff);
+        state = usize::from(step >> 8);
     }
     d
+}
+
+/// `HILBERT_STEPS[state][x << 4 | y]` for nibbles `x`, `y`: the next eight bits of the index
+/// (low byte) and the state after the four levels (high byte). A state is the transform the
+/// curve has applied to the remaining levels so far: bit 0 swaps `x` and `y`, bit 1
+/// complements both (they commute, so four states cover every composition).
+static HILBERT_STEPS: [[u16; 256]; 4] = hilbert_steps();
+
+const fn hilbert_steps() -> [[u16; 256]; 4] {
+    let mut table = [[0u16; 256]; 4];
+    let mut start = 0;
+    while start < 4 {
+        let mut nibbles = 0;
+        while nibbles < 256 {
+            let (mut state, mut digits) = (start, 0u16);
+            let mut level = 4;
+            while level > 0 {
+                level -= 1;
+                let (bx, by) = ((nibbles >> (4 + level)) & 1, (nibbles >> level) & 1);
+                let (mut rx, mut ry) = if state & 1 == 1 { (by, bx) } else { (bx, by) };
+                if state & 2 == 2 {
+                    (rx, ry) = (rx ^ 1, ry ^ 1);
+                }
+                digits = digits << 2 | ((3 * rx) ^ ry) as u16;
+                // The quadrant's transform: complement when rx = 1, then swap (ry = 0 only).
+                if ry == 0 {
+                    state ^= 1 | (rx << 1);
+                }
+            }
+            table[start][nibbles] = (state as u16) << 8 | digits;
+            nibbles += 1;
+        }
+        start += 1;
+    }
+    table
 }
 
 /// Fisher-Yates shuffle driven by SplitMix64.
@@ -149,6 +177,41 @@ mod tests {
         for w in cells.windows(2) {
             assert_eq!(w[1].0, w[0].0 + 1);
             assert_eq!(w[0].1.abs_diff(w[1].1) + w[0].2.abs_diff(w[1].2), 1);
+        }
+    }
+
+    /// The curve as its textbook definition computes it, one level at a time.
+    fn hilbert_index_by_levels(mut x: u32, mut y: u32) -> u32 {
+        let n = 1u32 << HILBERT_BITS;
+        let (mut d, mut s) = (0, n / 2);
+        while s > 0 {
+            let (rx, ry) = (u32::from(x & s > 0), u32::from(y & s > 0));
+            d += s * s * ((3 * rx) ^ ry);
+            if ry == 0 {
+                if rx == 1 {
+                    (x, y) = (n - 1 - x, n - 1 - y);
+                }
+                std::mem::swap(&mut x, &mut y);
+            }
+            s /= 2;
+        }
+        d
+    }
+
+    #[test]
+    fn hilbert_steps_agree_with_the_level_by_level_curve() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut cells: Vec<(u32, u32)> =
+            (0..256).flat_map(|x| (0..256).map(move |y| (x, y))).collect();
+        for _ in 0..200_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            cells.push((state as u32 & 0xffff, (state >> 32) as u32 & 0xffff));
+        }
+        cells.extend([(0xffff, 0), (0, 0xffff), (0xffff, 0xffff), (0x8000, 0x7fff)]);
+        for (x, y) in cells {
+            assert_eq!(hilbert_index(x, y), hilbert_index_by_levels(x, y), "cell ({x}, {y})");
         }
     }
 

@@ -18,6 +18,11 @@
 //! flip keeps on which side) is one bit per slot. A vertex's out-edge is stored as a slot: the
 //! half-edge itself if the vertex is its origin, otherwise its outer twin.
 //!
+//! Two departures that cannot change the result: a point strictly inside a face is located
+//! by a visibility walk from the previous vertex (spade's walk can only find that face too),
+//! and the most frequent operations (flips, face splits, hull growth) are written out by hand
+//! instead of through the general [`Dt::rewrite`].
+//!
 //! # Complexity
 //! As spade's: O(n log n) expected in BRIO order with the previous vertex as hint.
 use super::EMPTY;
@@ -74,6 +79,9 @@ pub(super) struct Dt {
     stack: Vec<Handle>,
     pending: Vec<Handle>,
     held: Vec<Handle>,
+    /// Whether the last point went outside the hull: the next one likely does too, and then
+    /// the fast location path would only add a walk to spade's.
+    last_outside: bool,
 }
 
 #[inline]
@@ -136,6 +144,7 @@ impl Dt {
             stack: Vec::new(),
             pending: Vec::new(),
             held: Vec::new(),
+            last_outside: false,
         };
         // spade: the first two vertices share edge 0 (normalized half from vertex 0); the
         // third, off their line, goes outside that edge on its side: one face whose adjacent
@@ -163,7 +172,13 @@ impl Dt {
     pub fn insert(&mut self, i: usize, hint: u32) -> (u32, bool) {
         let p = self.points[i];
         let start = if (hint as usize) < self.num_vertices { hint } else { 0 };
-        match self.locate(p, start) {
+        let fast = if self.last_outside { None } else { self.face_strictly_containing(p, start) };
+        let location = match fast {
+            Some(f) => Location::OnFace(f),
+            None => self.locate(p, start),
+        };
+        self.last_outside = matches!(location, Location::Outside(_));
+        match location {
             Location::OnVertex(v) => (v, false),
             location => {
                 let v = self.num_vertices as u32;
@@ -271,9 +286,7 @@ impl Dt {
 
     #[inline]
     fn is_normalized(&self, h: Handle) -> bool {
-        let s = slot(h) as usize;
-        let bit = self.normalized[s / 64] >> (s % 64) & 1 == 1;
-        bit != is_outer(h)
+        self.normalized_bit(slot(h)) != is_outer(h)
     }
 
     #[inline]
@@ -292,7 +305,50 @@ impl Dt {
         }
     }
 
-    // Location: spade's `walk_to_nearest_neighbor` and `locate_with_hint_fixed_core`.
+    // Location: a fast path, then spade's `walk_to_nearest_neighbor` and
+    // `locate_with_hint_fixed_core`.
+
+    /// The face with `p` strictly inside, found by a visibility walk from a face of `start`;
+    /// `None` when the walk meets `p` on an edge or a vertex, or leaves the hull.
+    ///
+    /// Where it answers, spade's location must answer the same: a point strictly inside a
+    /// face lies in no other face, on no edge and no vertex. Every other case goes to the
+    /// spade walk ([`Dt::locate`]), whose handle decides how an edge is split or the hull
+    /// grows. A visibility walk cannot cycle in a Delaunay triangulation (Edelsbrunner,
+    /// *An acyclicity theorem for cell complexes in d dimensions*, 1990); the step limit only
+    /// hands pathological walks back to spade's.
+    fn face_strictly_containing(&self, p: Point, start: u32) -> Option<u32> {
+        let mut face = self.out[start as usize] / 3;
+        // The slot we came in by: `p` is strictly left of it.
+        let mut entry = EMPTY;
+        for _ in 0..self.num_faces() {
+            let base = 3 * face;
+            let corners = [base, base + 1, base + 2].map(|s| self.pos(self.tri[s as usize]));
+            let mut on_an_edge = false;
+            let mut crossed = false;
+            for k in 0..3 {
+                let s = base + k;
+                if s == entry {
+                    continue;
+                }
+                let o = side(corners[k as usize], corners[((k + 1) % 3) as usize], p);
+                if o < 0.0 {
+                    let t = self.twin[s as usize];
+                    if t == EMPTY {
+                        return None;
+                    }
+                    (face, entry) = (t / 3, t);
+                    crossed = true;
+                    break;
+                }
+                on_an_edge |= o == 0.0;
+            }
+            if !crossed {
+                return if on_an_edge { None } else { Some(face) };
+            }
+        }
+        None
+    }
 
     fn walk_to_nearest_neighbour(&self, start: u32, p: Point) -> u32 {
         let start_position = self.pos(start);
@@ -373,46 +429,47 @@ impl Dt {
 
     // Operations: spade's `dcel_operations`, each as the faces it leaves behind.
 
-    /// The half of face `f` (spade's face `f + 1`) that spade calls its adjacent edge.
-    #[inline]
-    fn adjacent(f: u32) -> Handle {
-        Handle::from(3 * f + 1)
-    }
-
-    /// `dcel_operations::insert_into_triangle`: `v` splits face `f0` into three.
+    /// `dcel_operations::insert_into_triangle`: `v` splits face `f0` into three. Spade keeps
+    /// the adjacent edge `e0` in `f0` and moves `e1` and `e2` into the new faces `nf` and
+    /// `nf + 1`, each with `v` opposite; written out by hand (the same as the [`Dt::rewrite`]
+    /// of the three faces).
     fn insert_into_triangle(&mut self, v: u32, f0: u32) {
-        let e0 = Self::adjacent(f0);
-        let (e1, e2) = (self.next(e0), self.next(self.next(e0)));
-        let [v0, v1, v2] = [e0, e1, e2].map(|e| self.from(e));
+        debug_assert!(self.stack.is_empty() && self.pending.is_empty() && self.held.is_empty());
         let nf = self.num_faces();
-        let old = |e: Handle, origin| Half {
-            origin,
-            normalized: self.is_normalized(e),
-            old: e,
-            twin: Twin::Kept,
-        };
-        let new = |origin, normalized, twin| Half {
-            origin,
-            normalized,
-            old: NEW,
-            twin: Twin::Internal(twin),
-        };
-        let halves = [
-            // f0: e0, e3, e8
-            old(e0, v0),
-            new(v1, true, 5),
-            new(v, false, 7),
-            // f1: e1, e5, e4
-            old(e1, v1),
-            new(v2, true, 8),
-            new(v, false, 1),
-            // f2: e2, e7, e6
-            old(e2, v2),
-            new(v0, true, 2),
-            new(v, false, 4),
-        ];
-        let s = self.rewrite(&[f0, nf, nf + 1], &halves);
-        self.out[v as usize] = s[5]; // e4
+        let (b0, b1, b2) = (3 * f0, 3 * nf, 3 * nf + 3);
+        let (e0, e1, e2) = (b0 + 1, b0 + 2, b0);
+        let [v0, v1, v2] = [e0, e1, e2].map(|s| self.tri[s as usize]);
+        let [t1, t2] = [e1, e2].map(|s| self.twin[s as usize]);
+        let [n1, n2] = [e1, e2].map(|s| self.normalized_bit(s));
+        self.add_faces(2);
+        // Each face starts at the new vertex: [v, old edge's origin, its destination].
+        self.tri[b0 as usize..b0 as usize + 3].copy_from_slice(&[v, v0, v1]);
+        self.tri[b1 as usize..b1 as usize + 3].copy_from_slice(&[v, v1, v2]);
+        self.tri[b2 as usize..b2 as usize + 3].copy_from_slice(&[v, v2, v0]);
+        let t0 = self.twin[e0 as usize];
+        self.twin[b0 as usize..b0 as usize + 3].copy_from_slice(&[b2 + 2, t0, b1]);
+        self.twin[b1 as usize..b1 as usize + 3].copy_from_slice(&[b0 + 2, t1, b2]);
+        self.twin[b2 as usize..b2 as usize + 3].copy_from_slice(&[b1 + 2, t2, b0]);
+        for (slot, twin) in [(b1 + 1, t1), (b2 + 1, t2)] {
+            if twin != EMPTY {
+                self.twin[twin as usize] = slot;
+            }
+        }
+        for (s, normalized) in [(b0, false), (b0 + 2, true), (b1, false), (b1 + 1, n1)] {
+            self.set_normalized_bit(s, normalized);
+        }
+        for (s, normalized) in [(b1 + 2, true), (b2, false), (b2 + 1, n2), (b2 + 2, true)] {
+            self.set_normalized_bit(s, normalized);
+        }
+        // Out-edges on a moved half-edge (itself, or its outer twin) follow it.
+        for (old, new, ends) in [(e1, b1 + 1, [v1, v2]), (e2, b2 + 1, [v2, v0])] {
+            for x in ends {
+                if self.out[x as usize] == old {
+                    self.out[x as usize] = new;
+                }
+            }
+        }
+        self.out[v as usize] = b1;
     }
 
     /// `dcel_operations::split_edge`: `v` splits the inner edge `e0` and both its faces.
@@ -490,38 +547,63 @@ impl Dt {
     }
 
     /// `dcel_operations::create_new_face_adjacent_to_edge`: a face on the outer half-edge
-    /// `edge` with apex `v`.
+    /// `edge` with apex `v`; written out by hand (the same as the [`Dt::rewrite`] of the new
+    /// face).
     fn create_new_face_adjacent_to_edge(&mut self, edge: Handle, v: u32) {
+        debug_assert!(is_outer(edge) && self.stack.is_empty() && self.held.is_empty());
+        let inner = slot(edge);
         let (from, to) = (self.from(edge), self.to(edge));
-        let nf = self.num_faces();
-        let halves = [
-            Half {
-                origin: from,
-                normalized: self.is_normalized(edge),
-                old: edge,
-                twin: Twin::Kept,
-            },
-            Half { origin: to, normalized: true, old: NEW, twin: Twin::Hull },
-            Half { origin: v, normalized: true, old: NEW, twin: Twin::Hull },
-        ];
-        let s = self.rewrite(&[nf], &halves);
-        self.out[v as usize] = s[2];
+        let normalized = self.is_normalized(edge);
+        let b = 3 * self.num_faces();
+        self.add_faces(1);
+        self.tri[b as usize..b as usize + 3].copy_from_slice(&[v, from, to]);
+        self.twin[b as usize + 1] = inner;
+        self.twin[inner as usize] = b + 1;
+        self.set_normalized_bit(b, true);
+        self.set_normalized_bit(b + 1, normalized);
+        self.set_normalized_bit(b + 2, true);
+        if self.out[from as usize] == inner {
+            self.out[from as usize] = b + 1;
+        }
+        self.out[v as usize] = b;
     }
 
     /// `dcel_operations::create_single_face_between_edge_and_next`: closes the outer
     /// half-edge `edge` and its successor with a face; returns the new outer half-edge and
-    /// where `edge` and its successor now lie.
+    /// where `edge` and its successor now lie. Written out by hand (the same as the
+    /// [`Dt::rewrite`] of the new face).
     fn create_single_face_between_edge_and_next(&mut self, edge: Handle) -> [Handle; 3] {
+        debug_assert!(self.stack.is_empty() && self.pending.is_empty());
         let next = self.next(edge);
         let (a, b, c) = (self.from(edge), self.from(next), self.to(next));
-        let nf = self.num_faces();
-        let halves = [
-            Half { origin: c, normalized: true, old: NEW, twin: Twin::Hull },
-            Half { origin: a, normalized: self.is_normalized(edge), old: edge, twin: Twin::Kept },
-            Half { origin: b, normalized: self.is_normalized(next), old: next, twin: Twin::Kept },
-        ];
-        let s = self.rewrite(&[nf], &halves);
-        [OUTER | Handle::from(s[0]), Handle::from(s[1]), Handle::from(s[2])]
+        let (edge_normalized, next_normalized) =
+            (self.is_normalized(edge), self.is_normalized(next));
+        let (s_edge, s_next) = (slot(edge), slot(next));
+        let base = 3 * self.num_faces();
+        self.add_faces(1);
+        // [next, the new hull edge c -> a, edge].
+        self.tri[base as usize..base as usize + 3].copy_from_slice(&[b, c, a]);
+        self.twin[base as usize] = s_next;
+        self.twin[base as usize + 2] = s_edge;
+        self.twin[s_next as usize] = base;
+        self.twin[s_edge as usize] = base + 2;
+        self.set_normalized_bit(base, next_normalized);
+        self.set_normalized_bit(base + 1, true);
+        self.set_normalized_bit(base + 2, edge_normalized);
+        if self.out[a as usize] == s_edge {
+            self.out[a as usize] = base + 2;
+        }
+        if self.out[b as usize] == s_next {
+            self.out[b as usize] = base;
+        }
+        for h in &mut self.held {
+            if *h == edge {
+                *h = Handle::from(base + 2);
+            } else if *h == next {
+                *h = Handle::from(base);
+            }
+        }
+        [OUTER | Handle::from(base + 1), Handle::from(base + 2), Handle::from(base)]
     }
 
     /// `dcel_operations::flip_cw` of the undirected edge of `h` (both halves inner): the
@@ -532,32 +614,25 @@ impl Dt {
         let e = if self.is_normalized(h) { slot(h) } else { slot(self.rev(h)) };
         let t = self.twin[e as usize];
         let (en, ep, tn, tp) = (nxt(e), prv(e), nxt(t), prv(t));
+        let (be, bt) = (e - e % 3, t - t % 3);
         let (a, b) = (self.tri[e as usize], self.tri[t as usize]);
         let (c, d) = (self.tri[ep as usize], self.tri[tp as usize]);
-        let bit = |s: u32| self.normalized[s as usize / 64] >> (s % 64) & 1 == 1;
-        let bits = [bit(tp), bit(en), bit(ep), bit(tn)];
+        let bits = [tp, en, ep, tn].map(|s| self.normalized_bit(s));
         let twins = [tp, en, ep, tn].map(|s| self.twin[s as usize]);
-        let (be, bt) = (e - e % 3, t - t % 3);
-        // Old slot -> new slot of the six half-edges.
-        let moves = [(e, be + 1), (tp, be + 2), (en, be), (t, bt + 1), (ep, bt + 2), (tn, bt)];
         let out_c = self.out[c as usize];
         let out_d = self.out[d as usize];
-        for (s, v, normalized) in [
-            (be + 1, c, true),
-            (be + 2, d, bits[0]),
-            (be, b, bits[1]),
-            (bt + 1, d, false),
-            (bt + 2, c, bits[2]),
-            (bt, a, bits[3]),
-        ] {
-            self.tri[s as usize] = v;
-            let (word, k) = (s as usize / 64, s % 64);
-            self.normalized[word] = self.normalized[word] & !(1 << k) | u64::from(normalized) << k;
+        // Face of `e`: [en, e, tp] -> slots be, be + 1, be + 2; face of `t`: [tn, t, ep].
+        self.tri[be as usize..be as usize + 3].copy_from_slice(&[b, c, d]);
+        self.tri[bt as usize..bt as usize + 3].copy_from_slice(&[a, d, c]);
+        for (s, normalized) in [(be, bits[1]), (be + 1, true), (be + 2, bits[0])] {
+            self.set_normalized_bit(s, normalized);
         }
-        self.twin[(be + 1) as usize] = bt + 1;
-        self.twin[(bt + 1) as usize] = be + 1;
+        for (s, normalized) in [(bt, bits[3]), (bt + 1, false), (bt + 2, bits[2])] {
+            self.set_normalized_bit(s, normalized);
+        }
+        self.twin[be as usize..be as usize + 3].copy_from_slice(&[twins[1], bt + 1, twins[0]]);
+        self.twin[bt as usize..bt as usize + 3].copy_from_slice(&[twins[3], be + 1, twins[2]]);
         for (s, outside) in [be + 2, be, bt + 2, bt].into_iter().zip(twins) {
-            self.twin[s as usize] = outside;
             if outside != EMPTY {
                 self.twin[outside as usize] = s;
             }
@@ -575,20 +650,56 @@ impl Dt {
         } else if out_d == tn {
             self.out[d as usize] = bt;
         }
+        // Handles into the two faces follow their half-edges. The link edges that
+        // `legalize_vertex` has still to do never lie in them: a flip rewrites the face of
+        // the link edge it flips and the face across, which does not contain the new vertex;
+        // the other link edges lie in other faces of the new vertex's star.
         let (fe, ft) = (e / 3, t / 3);
-        for list in [&mut self.stack, &mut self.pending, &mut self.held] {
+        debug_assert!(self.pending.iter().all(|&h| slot(h) / 3 != fe && slot(h) / 3 != ft));
+        for list in [&mut self.stack, &mut self.held] {
             for h in list.iter_mut() {
                 let s = slot(*h);
                 if s / 3 == fe || s / 3 == ft {
-                    let new = moves.iter().find(|m| m.0 == s).expect("a slot of the two faces").1;
+                    let new = if s == e {
+                        be + 1
+                    } else if s == tp {
+                        be + 2
+                    } else if s == en {
+                        be
+                    } else if s == t {
+                        bt + 1
+                    } else if s == ep {
+                        bt + 2
+                    } else {
+                        bt
+                    };
                     *h = (*h & OUTER) | Handle::from(new);
                 }
             }
         }
     }
 
+    #[inline]
+    fn normalized_bit(&self, s: u32) -> bool {
+        self.normalized[s as usize / 64] >> (s % 64) & 1 == 1
+    }
+
+    #[inline]
+    fn set_normalized_bit(&mut self, s: u32, normalized: bool) {
+        let (word, k) = (s as usize / 64, s % 64);
+        self.normalized[word] = self.normalized[word] & !(1 << k) | u64::from(normalized) << k;
+    }
+
     fn num_faces(&self) -> u32 {
         (self.tri.len() / 3) as u32
+    }
+
+    /// Appends `k` faces for the caller to fill.
+    fn add_faces(&mut self, k: usize) {
+        let len = self.tri.len() + 3 * k;
+        self.tri.resize(len, 0);
+        self.twin.resize(len, EMPTY);
+        self.normalized.resize(len.div_ceil(64), 0);
     }
 
     /// Writes `faces` (existing, or the next new ones in order) with `halves`, three per face
@@ -634,9 +745,7 @@ impl Dt {
         for (j, half) in halves.iter().enumerate() {
             let s = slots[j] as usize;
             self.tri[s] = half.origin;
-            let (word, bit) = (s / 64, s % 64);
-            self.normalized[word] =
-                self.normalized[word] & !(1 << bit) | u64::from(half.normalized) << bit;
+            self.set_normalized_bit(s as u32, half.normalized);
         }
         for (j, half) in halves.iter().enumerate() {
             let s = slots[j];
@@ -743,13 +852,11 @@ impl Dt {
                 break;
             }
         }
-        let mut k = 0;
-        while k < self.pending.len() {
-            let edge = self.pending[k];
+        // In spade's order; the list holds only the edges still to do.
+        self.pending.reverse();
+        while let Some(edge) = self.pending.pop() {
             self.legalize_edge(edge);
-            k += 1;
         }
-        self.pending.clear();
     }
 
     /// spade's `legalize_edge`: flips until the edges around the new vertex are Delaunay.
