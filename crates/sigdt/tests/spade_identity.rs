@@ -177,3 +177,18 @@ fn grids_with_duplicates_triangulate_as_spade() {
     let offset: Vec<Point> = pts.iter().map(|p| [p[0] + 1e15, p[1] - 1e15]).collect();
     same_as_spade(&offset);
 }
+
+/// Fuzz find (`delaunay` target, minimised from 156 points): the first point after the seed
+/// lies outside the hull, nearly on the line of the seed's long edge. The walk started at
+/// vertex 0 instead of spade's hint, the seed's last vertex, and found another hull edge to
+/// grow from: the same triangles, numbered differently.
+#[test]
+fn near_collinear_hull_growth() {
+    same_as_spade(&[
+        [0.0, 0.0],
+        [-1.0, 98.0],
+        [0.0, 0.0],
+        [-1.0000000000000002, 97.99999999999999],
+        [-24.500000000000007, 2400.9999999999995],
+    ]);
+}
