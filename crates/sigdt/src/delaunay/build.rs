@@ -102,9 +102,9 @@ fn proper(input: Cow<'_, [Point]>, scaling: Scaling, seed: [u32; 3]) -> Result<T
     let mut dt = Dt::new(points);
     // `order` becomes `input_index` in place: vertex `v` is written at `v <= k`.
     let mut input_index = order;
-    let mut later_duplicates: Vec<(u32, u32)> = Vec::new(); // (input index, vertex)
     // spade's hint is the last vertex inserted, and the seed's last is vertex 2.
     let mut hint = 2;
+    let mut later_duplicates: Vec<(u32, u32)> = Vec::new(); // (input index, vertex)
     for k in 3..n {
         let i = input_index[k];
         let (v, new) = dt.insert(k, hint);
