@@ -267,12 +267,36 @@ fn golden_curves_optimal_transport() {
     curves(Method::OptimalTransport.name(), &[]);
 }
 
-#[test]
-fn golden_real_shapes() {
+/// The runs over `data/real` whose names `select` accepts.
+fn real_shapes(select: impl Fn(&str) -> bool) {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data/real");
-    for (name, options) in runs() {
+    for (name, options) in runs().into_iter().filter(|(name, _)| select(name)) {
         let run = run(&dir, &options);
         println!("{}", report(&run, &format!("{name} on data/real")));
         check_golden(&run, "real", &name);
     }
+}
+
+/// The slow baselines run in tests of their own, so that the test threads share the work.
+const SLOW_ON_REAL: [Method; 3] =
+    [Method::FitConnect, Method::StretchDenoise, Method::OptimalTransport];
+
+#[test]
+fn golden_real_shapes() {
+    real_shapes(|name| SLOW_ON_REAL.iter().all(|m| m.name() != name));
+}
+
+#[test]
+fn golden_real_shapes_fit_connect() {
+    real_shapes(|name| name == Method::FitConnect.name());
+}
+
+#[test]
+fn golden_real_shapes_stretch_denoise() {
+    real_shapes(|name| name == Method::StretchDenoise.name());
+}
+
+#[test]
+fn golden_real_shapes_optimal_transport() {
+    real_shapes(|name| name == Method::OptimalTransport.name());
 }

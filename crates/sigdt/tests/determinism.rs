@@ -124,7 +124,7 @@ fn results_do_not_depend_on_the_thread_count() {
 #[test]
 fn one_large_set_is_the_same_on_every_pool_size() {
     // Above the size where the kernel's loops go parallel (2^14), on rayon pools of 1, 2
-    // and 3 threads: the same result, every method, bit for bit.
+    // and (release) 3 threads: the same result, every method, bit for bit.
     // Debug builds (`make test`) take the curve only: the spiral doubles the test's minute.
     let n = scale(60_000, 20_000);
     let mut sets = vec![random_closed_curve(5, n).shuffled(1).points];
@@ -138,7 +138,9 @@ fn one_large_set_is_the_same_on_every_pool_size() {
                 pool.install(|| bytes(points, method))
             };
             let one = on(1);
-            for threads in [2, 3] {
+            // Debug builds compare with two threads only (a third pool adds a third of the
+            // test's half minute); release builds with two and three.
+            for &threads in if cfg!(debug_assertions) { &[2][..] } else { &[2, 3][..] } {
                 assert!(on(threads) == one, "{method}: 1 and {threads} threads differ");
             }
         }

@@ -441,33 +441,20 @@ impl Dt {
         let [v0, v1, v2] = [e0, e1, e2].map(|s| self.tri[s as usize]);
         let [t1, t2] = [e1, e2].map(|s| self.twin[s as usize]);
         let [n1, n2] = [e1, e2].map(|s| self.normalized_bit(s));
+        let n0 = self.normalized_bit(e0);
         self.add_faces(2);
-        // Each face starts at the new vertex: [v, old edge's origin, its destination].
-        self.tri[b0 as usize..b0 as usize + 3].copy_from_slice(&[v, v0, v1]);
-        self.tri[b1 as usize..b1 as usize + 3].copy_from_slice(&[v, v1, v2]);
-        self.tri[b2 as usize..b2 as usize + 3].copy_from_slice(&[v, v2, v0]);
-        let t0 = self.twin[e0 as usize];
-        self.twin[b0 as usize..b0 as usize + 3].copy_from_slice(&[b2 + 2, t0, b1]);
-        self.twin[b1 as usize..b1 as usize + 3].copy_from_slice(&[b0 + 2, t1, b2]);
-        self.twin[b2 as usize..b2 as usize + 3].copy_from_slice(&[b1 + 2, t2, b0]);
-        for (slot, twin) in [(b1 + 1, t1), (b2 + 1, t2)] {
-            if twin != EMPTY {
-                self.twin[twin as usize] = slot;
-            }
+        // Each face starts at the new vertex: [v, old edge's origin, its destination]. `e0`
+        // stays at its slot with its twin.
+        self.write_face(b0, [v, v0, v1], [false, n0, true]);
+        self.write_face(b1, [v, v1, v2], [false, n1, true]);
+        self.write_face(b2, [v, v2, v0], [false, n2, true]);
+        for (s, t) in [(b0, b2 + 2), (b0 + 2, b1), (b1 + 2, b2), (b1 + 1, t1), (b2 + 1, t2)] {
+            self.link(s, t);
         }
-        for (s, normalized) in [(b0, false), (b0 + 2, true), (b1, false), (b1 + 1, n1)] {
-            self.set_normalized_bit(s, normalized);
-        }
-        for (s, normalized) in [(b1 + 2, true), (b2, false), (b2 + 1, n2), (b2 + 2, true)] {
-            self.set_normalized_bit(s, normalized);
-        }
-        // Out-edges on a moved half-edge (itself, or its outer twin) follow it.
-        for (old, new, ends) in [(e1, b1 + 1, [v1, v2]), (e2, b2 + 1, [v2, v0])] {
-            for x in ends {
-                if self.out[x as usize] == old {
-                    self.out[x as usize] = new;
-                }
-            }
+        for (x, old, new) in
+            [(v1, e1, b1 + 1), (v2, e1, b1 + 1), (v2, e2, b2 + 1), (v0, e2, b2 + 1)]
+        {
+            self.follow_out_edge(x, old, new);
         }
         self.out[v as usize] = b1;
     }
@@ -556,15 +543,9 @@ impl Dt {
         let normalized = self.is_normalized(edge);
         let b = 3 * self.num_faces();
         self.add_faces(1);
-        self.tri[b as usize..b as usize + 3].copy_from_slice(&[v, from, to]);
-        self.twin[b as usize + 1] = inner;
-        self.twin[inner as usize] = b + 1;
-        self.set_normalized_bit(b, true);
-        self.set_normalized_bit(b + 1, normalized);
-        self.set_normalized_bit(b + 2, true);
-        if self.out[from as usize] == inner {
-            self.out[from as usize] = b + 1;
-        }
+        self.write_face(b, [v, from, to], [true, normalized, true]);
+        self.link(b + 1, inner);
+        self.follow_out_edge(from, inner, b + 1);
         self.out[v as usize] = b;
     }
 
@@ -582,20 +563,11 @@ impl Dt {
         let base = 3 * self.num_faces();
         self.add_faces(1);
         // [next, the new hull edge c -> a, edge].
-        self.tri[base as usize..base as usize + 3].copy_from_slice(&[b, c, a]);
-        self.twin[base as usize] = s_next;
-        self.twin[base as usize + 2] = s_edge;
-        self.twin[s_next as usize] = base;
-        self.twin[s_edge as usize] = base + 2;
-        self.set_normalized_bit(base, next_normalized);
-        self.set_normalized_bit(base + 1, true);
-        self.set_normalized_bit(base + 2, edge_normalized);
-        if self.out[a as usize] == s_edge {
-            self.out[a as usize] = base + 2;
-        }
-        if self.out[b as usize] == s_next {
-            self.out[b as usize] = base;
-        }
+        self.write_face(base, [b, c, a], [next_normalized, true, edge_normalized]);
+        self.link(base, s_next);
+        self.link(base + 2, s_edge);
+        self.follow_out_edge(a, s_edge, base + 2);
+        self.follow_out_edge(b, s_next, base);
         for h in &mut self.held {
             if *h == edge {
                 *h = Handle::from(base + 2);
@@ -619,36 +591,19 @@ impl Dt {
         let (c, d) = (self.tri[ep as usize], self.tri[tp as usize]);
         let bits = [tp, en, ep, tn].map(|s| self.normalized_bit(s));
         let twins = [tp, en, ep, tn].map(|s| self.twin[s as usize]);
-        let out_c = self.out[c as usize];
-        let out_d = self.out[d as usize];
         // Face of `e`: [en, e, tp] -> slots be, be + 1, be + 2; face of `t`: [tn, t, ep].
-        self.tri[be as usize..be as usize + 3].copy_from_slice(&[b, c, d]);
-        self.tri[bt as usize..bt as usize + 3].copy_from_slice(&[a, d, c]);
-        for (s, normalized) in [(be, bits[1]), (be + 1, true), (be + 2, bits[0])] {
-            self.set_normalized_bit(s, normalized);
-        }
-        for (s, normalized) in [(bt, bits[3]), (bt + 1, false), (bt + 2, bits[2])] {
-            self.set_normalized_bit(s, normalized);
-        }
-        self.twin[be as usize..be as usize + 3].copy_from_slice(&[twins[1], bt + 1, twins[0]]);
-        self.twin[bt as usize..bt as usize + 3].copy_from_slice(&[twins[3], be + 1, twins[2]]);
+        self.write_face(be, [b, c, d], [bits[1], true, bits[0]]);
+        self.write_face(bt, [a, d, c], [bits[3], false, bits[2]]);
+        self.link(be + 1, bt + 1);
         for (s, outside) in [be + 2, be, bt + 2, bt].into_iter().zip(twins) {
-            if outside != EMPTY {
-                self.twin[outside as usize] = s;
-            }
+            self.link(s, outside);
         }
-        // Out-edges: spade resets those of `a` and `b`; `c` and `d` follow theirs.
+        // Out-edges: spade resets those of `a` and `b`; `c` and `d` follow theirs (each old
+        // slot lies in one face and its new one in the other, so the moves cannot chain).
         self.out[a as usize] = bt;
         self.out[b as usize] = be;
-        if out_c == ep {
-            self.out[c as usize] = bt + 2;
-        } else if out_c == en {
-            self.out[c as usize] = be;
-        }
-        if out_d == tp {
-            self.out[d as usize] = be + 2;
-        } else if out_d == tn {
-            self.out[d as usize] = bt;
+        for (x, old, new) in [(c, ep, bt + 2), (c, en, be), (d, tp, be + 2), (d, tn, bt)] {
+            self.follow_out_edge(x, old, new);
         }
         // Handles into the two faces follow their half-edges. The link edges that
         // `legalize_vertex` has still to do never lie in them: a flip rewrites the face of
@@ -692,6 +647,33 @@ impl Dt {
 
     fn num_faces(&self) -> u32 {
         (self.tri.len() / 3) as u32
+    }
+
+    /// Writes face `base / 3`: the origins of its three half-edges and their normalized bits.
+    #[inline]
+    fn write_face(&mut self, base: u32, origins: [u32; 3], normalized: [bool; 3]) {
+        self.tri[base as usize..base as usize + 3].copy_from_slice(&origins);
+        for (k, bit) in (0..3).zip(normalized) {
+            self.set_normalized_bit(base + k, bit);
+        }
+    }
+
+    /// Makes slots `s` and `t` twins; `t = EMPTY` puts `s` on the hull.
+    #[inline]
+    fn link(&mut self, s: u32, t: u32) {
+        self.twin[s as usize] = t;
+        if t != EMPTY {
+            self.twin[t as usize] = s;
+        }
+    }
+
+    /// Moves the out-edge of `x` from slot `old` to `new` if it was there (the half-edge
+    /// itself, or its outer twin, moved).
+    #[inline]
+    fn follow_out_edge(&mut self, x: u32, old: u32, new: u32) {
+        if self.out[x as usize] == old {
+            self.out[x as usize] = new;
+        }
     }
 
     /// Appends `k` faces for the caller to fill.
