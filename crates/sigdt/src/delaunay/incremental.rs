@@ -27,6 +27,7 @@
 //! As spade's: O(n log n) expected in BRIO order with the previous vertex as hint.
 use super::EMPTY;
 use crate::geometry::Point;
+use crate::graph::word_bit;
 use robust::Coord;
 
 /// A spade half-edge: a slot, or `OUTER | slot` for the outer twin of that slot.
@@ -636,7 +637,7 @@ impl Dt {
 
     #[inline]
     fn normalized_bit(&self, s: u32) -> bool {
-        self.normalized[s as usize / 64] >> (s % 64) & 1 == 1
+        word_bit(&self.normalized, s)
     }
 
     #[inline]
