@@ -31,12 +31,28 @@ pub fn nearest_neighbour_distances(dt: &Triangulation, points: &[Point]) -> Vec<
 /// `r[v]`: distance from vertex `v` to its nearest other vertex (`∞` for a lone point), in
 /// the triangulation's scaled coordinates.
 pub(crate) fn nearest_vertex_distances(dt: &Triangulation) -> Vec<f64> {
+    if dt.shape() != Shape::Proper {
+        return nearest(dt).into_iter().map(|(len2, _)| len2.sqrt()).collect();
+    }
     // Minimum of squared lengths, then one square root per vertex: sqrt is monotone and
-    // correctly rounded, so this equals the minimum of the lengths.
-    let mut r: Vec<f64> = nearest(dt).into_iter().map(|(len2, _)| len2.sqrt()).collect();
-    // The collect reuses the pairs' allocation, twice the size needed.
-    r.shrink_to_fit();
-    r
+    // correctly rounded, so this equals the minimum of the lengths. Every edge at `v` is an
+    // outgoing half-edge of `v`, but for its incoming hull edge: one sequential pass over
+    // the half-edges with a branch-free minimum. Which neighbour is nearest is not needed,
+    // and the half-edge filter and compare-and-keep of [`nearest`] mispredict about every
+    // other edge, which made that pass three times slower.
+    let mut r2 = vec![f64::INFINITY; dt.num_vertices()];
+    for h in 0..dt.num_halfedges() as u32 {
+        let (a, b) = (dt.origin(h), dt.dest(h));
+        let len2 = squared_distance(dt.point(a), dt.point(b));
+        let ra = &mut r2[a as usize];
+        *ra = if len2 < *ra { len2 } else { *ra };
+        if dt.twin(h) == EMPTY {
+            let rb = &mut r2[b as usize];
+            *rb = if len2 < *rb { len2 } else { *rb };
+        }
+    }
+    r2.iter_mut().for_each(|x| *x = x.sqrt());
+    r2
 }
 
 /// Per vertex: the squared distance to its nearest other vertex and that vertex (ties to the
@@ -91,6 +107,19 @@ fn nearest(dt: &Triangulation) -> Vec<(f64, u32)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn distances_are_the_shortest_edge_at_every_vertex() {
+        let mut rng = crate::samplers::Rng::new(5);
+        let points: Vec<[f64; 2]> = (0..3000).map(|_| [rng.uniform(), rng.uniform()]).collect();
+        let dt = Triangulation::new(&points).unwrap();
+        let r = nearest_vertex_distances(&dt);
+        for v in 0..dt.num_vertices() as u32 {
+            let shortest = dt.incident(v).map(|h| dt.length(h)).fold(f64::INFINITY, f64::min);
+            assert_eq!(r[v as usize], shortest, "vertex {v}");
+        }
+        assert_eq!(r, nearest(&dt).iter().map(|(len2, _)| len2.sqrt()).collect::<Vec<_>>());
+    }
 
     #[test]
     fn nearest_on_a_rectangle() {

@@ -20,7 +20,7 @@
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 //! [Tou88]: https://doi.org/10.1016/0167-8655(88)90029-4
 use super::nearest::nearest_vertex_distances;
-use crate::delaunay::{Shape, Triangulation};
+use crate::delaunay::{Shape, Triangulation, EMPTY};
 use crate::geometry::Edge;
 use crate::geometry::{distance, squared_distance};
 use crate::graph::word_bit;
@@ -45,41 +45,34 @@ pub fn sigdt_mask(dt: &Triangulation) -> EdgeMask {
     sigdt_with_degrees(dt).0
 }
 
-/// [`sigdt_mask`] and the degree of every vertex in it. On one thread, one pass over the
-/// edges. On several, each half-edge is tested on its own (the test is symmetric bit for
-/// bit: `+` commutes and `dx² + dy²` does not depend on the direction), then each vertex
-/// counts its kept edges, both in parallel; the result is the same.
+/// [`sigdt_mask`] and the degree of every vertex in it. Each half-edge is tested on its own
+/// (the test is symmetric bit for bit: `+` commutes and `dx² + dy²` does not depend on the
+/// direction), 64 to a word of the mask, in parallel when the pool has several threads;
+/// then one sequential pass counts, at the origin of every kept half-edge (and at both ends
+/// of a kept hull half-edge, which has no twin), each edge once at each end. Both passes
+/// are branch-free: the test keeps about every other edge, and branching on it mispredicted
+/// that often.
 pub(crate) fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
     let r = nearest_vertex_distances(dt);
-    if !crate::parallel::is_parallel() {
-        let mut mask = EdgeMask::new(dt);
-        let mut degree = vec![0u32; dt.num_vertices()];
-        for h in dt.edge_halfedges() {
-            let (a, b) = (dt.origin(h), dt.dest(h));
-            let reach = (r[a as usize] + r[b as usize]) * (1.0 + TIE_SLACK);
-            if squared_distance(dt.point(a), dt.point(b)) <= reach * reach {
-                mask.set(dt, h, true);
-                degree[a as usize] += 1;
-                degree[b as usize] += 1;
-            }
-        }
-        return (mask, degree);
-    }
     let is_sig = |h: u32| {
         let (a, b) = (dt.origin(h), dt.dest(h));
         let reach = (r[a as usize] + r[b as usize]) * (1.0 + TIE_SLACK);
         squared_distance(dt.point(a), dt.point(b)) <= reach * reach
     };
-    // 64 half-edges a task, written straight into the mask's words.
     let halfedges = dt.num_halfedges();
     let words = crate::parallel::map_range(halfedges.div_ceil(64), |w| {
         (64 * w..(64 * w + 64).min(halfedges))
             .rev()
             .fold(0u64, |word, h| word << 1 | u64::from(is_sig(h as u32)))
     });
-    let degree = crate::parallel::map_range(dt.num_vertices(), |v| {
-        dt.incident(v as u32).filter(|&h| word_bit(&words, h)).count() as u32
-    });
+    let mut degree = vec![0u32; dt.num_vertices()];
+    for h in 0..halfedges as u32 {
+        let kept = u32::from(word_bit(&words, h));
+        degree[dt.origin(h) as usize] += kept;
+        if dt.twin(h) == EMPTY {
+            degree[dt.dest(h) as usize] += kept;
+        }
+    }
     let count = degree.iter().map(|&d| d as usize).sum::<usize>() / 2;
     (EdgeMask::from_words(words, count), degree)
 }
@@ -126,6 +119,27 @@ mod tests {
         let edges = sigdt(&dt);
         assert_eq!(edges.len(), 24);
         assert_eq!(edges.iter().filter(|e| e.contains(&12)).count(), 12);
+    }
+
+    #[test]
+    fn degrees_and_count_agree_with_the_mask() {
+        // Random points (a hull with many edges) and a spiral band; counted by walking stars.
+        let mut rng = crate::samplers::Rng::new(3);
+        let scattered: Vec<[f64; 2]> = (0..2000).map(|_| [rng.uniform(), rng.uniform()]).collect();
+        for points in [scattered, crate::samplers::spiral_band(3000).points] {
+            let dt = Triangulation::new(&points).unwrap();
+            let (mask, degree) = sigdt_with_degrees(&dt);
+            let r = nearest_vertex_distances(&dt);
+            for h in 0..dt.num_halfedges() as u32 {
+                let (a, b) = (dt.origin(h), dt.dest(h));
+                let kept = is_sig_edge(dt.length(h), r[a as usize], r[b as usize]);
+                assert_eq!(mask.contains(h), kept, "half-edge {h}");
+            }
+            let walked: Vec<u32> =
+                (0..dt.num_vertices() as u32).map(|v| mask.degree(&dt, v) as u32).collect();
+            assert_eq!(degree, walked);
+            assert_eq!(mask.len(), dt.edge_halfedges().filter(|&h| mask.contains(h)).count());
+        }
     }
 
     #[test]
