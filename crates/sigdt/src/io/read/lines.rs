@@ -1,7 +1,8 @@
 //! The line reader and the field splitting shared by the point and edge readers.
 //!
-//! Input is streamed line by line through a reused buffer, so memory stays bounded by the
-//! longest line, which is capped at [`MAX_LINE`] bytes. Blank lines are skipped, `#` starts
+//! Input is streamed line by line through a reused buffer, or in blocks of whole lines, so
+//! memory stays bounded by the block size plus the longest line, which is capped at
+//! [`MAX_LINE`] bytes. Blank lines are skipped, `#` starts
 //! a comment that runs to the end of the line, `\r\n` line endings and a UTF-8 byte-order
 //! mark are accepted, and every problem is an [`Error::Parse`] naming the file and the
 //! 1-based line.
@@ -47,17 +48,63 @@ impl<'a, R: BufRead> Lines<'a, R> {
             }
         }
         self.unread = false;
-        let bytes = &self.buf[self.content.clone()];
-        if bytes.contains(&0) {
-            // UTF-16 text without a byte-order mark (or a binary file) reads as NUL bytes
-            // between characters; showing them would say nothing.
-            let message = "line has NUL bytes: UTF-16 or binary data? Save it as UTF-8 text";
-            return Err(self.error(message.to_string()));
-        }
-        match std::str::from_utf8(bytes) {
+        match text(&self.buf[self.content.clone()]) {
             Ok(line) => Ok(Some(line)),
-            Err(_) => Err(self.error("line is not valid UTF-8".to_string())),
+            Err(message) => Err(self.error(message)),
         }
+    }
+
+    /// The next lines, whole, as one [`Block`] of about `size` bytes (more when its last line
+    /// runs past them); `None` at the end of input. Lines are not checked here, but for the
+    /// last one's length: reading stops with an error as soon as it exceeds [`MAX_LINE`],
+    /// so memory stays bounded by `size + MAX_LINE`.
+    pub(super) fn next_block(&mut self, size: usize) -> Result<Option<Block>> {
+        let mut bytes = Vec::with_capacity(size + 256);
+        // Where the last, possibly unfinished, line of `bytes` starts.
+        let mut last_start = 0;
+        let mut newlines = 0;
+        loop {
+            let chunk = match self.reader.fill_buf() {
+                Ok(chunk) => chunk,
+                Err(e) if e.kind() == ErrorKind::Interrupted => continue,
+                Err(source) => return Err(Error::Io { path: self.name.to_string(), source }),
+            };
+            if chunk.is_empty() {
+                break;
+            }
+            let take = if bytes.len() < size {
+                chunk.len().min(size - bytes.len())
+            } else {
+                // Past the size: to the end of the current line.
+                memchr::memchr(b'\n', chunk).map_or(chunk.len(), |i| i + 1)
+            };
+            let start = bytes.len();
+            bytes.extend_from_slice(&chunk[..take]);
+            self.reader.consume(take);
+            let added = &bytes[start..];
+            if let Some(last) = memchr::memrchr(b'\n', added) {
+                newlines += memchr::memchr_iter(b'\n', added).count();
+                last_start = start + last + 1;
+            }
+            if bytes.len() - last_start > MAX_LINE {
+                self.number += newlines + 1;
+                return Err(self.error(format!("line longer than {MAX_LINE} bytes")));
+            }
+            if bytes.len() >= size && bytes.last() == Some(&b'\n') {
+                break;
+            }
+        }
+        if bytes.is_empty() {
+            return Ok(None);
+        }
+        let first_line = self.number + 1;
+        self.number += newlines + usize::from(last_start < bytes.len());
+        Ok(Some(Block { bytes, first_line }))
+    }
+
+    /// A parse error on line `line` of this input.
+    pub(super) fn error_at(&self, line: usize, message: String) -> Error {
+        Error::Parse { path: self.name.to_string(), line, message }
     }
 
     /// Makes the next `next_content` return the current line again (if there is one).
@@ -104,11 +151,51 @@ impl<'a, R: BufRead> Lines<'a, R> {
     }
 }
 
+/// Whole lines of an input read at once (by [`Lines::next_block`]), so that they can be
+/// parsed apart from the reader, in parallel.
+pub(super) struct Block {
+    bytes: Vec<u8>,
+    /// The 1-based number of the first line.
+    pub first_line: usize,
+}
+
+impl Block {
+    /// `(line number, content)` of every line with content, in order, or the number and
+    /// message of the first line that is too long or whose content is not UTF-8 text
+    /// (checked as each line is reached, as [`Lines::next_content`] does).
+    pub(super) fn contents(&self) -> impl Iterator<Item = Result<(usize, &str), (usize, String)>> {
+        let body = self.bytes.strip_suffix(b"\n").unwrap_or(&self.bytes);
+        let ends = memchr::memchr_iter(b'\n', body).chain([body.len()]);
+        let starts = std::iter::once(0).chain(memchr::memchr_iter(b'\n', body).map(|i| i + 1));
+        let lines = starts.zip(ends).map(|(start, end)| &body[start..end]);
+        lines.zip(self.first_line..).filter_map(|(line, number)| {
+            if line.len() > MAX_LINE {
+                return Some(Err((number, format!("line longer than {MAX_LINE} bytes"))));
+            }
+            let range = content(line, false);
+            if range.is_empty() {
+                return None;
+            }
+            Some(text(&line[range]).map(|text| (number, text)).map_err(|m| (number, m)))
+        })
+    }
+}
+
+/// A line's content as text: refused if it has NUL bytes or is not UTF-8.
+fn text(bytes: &[u8]) -> Result<&str, String> {
+    if bytes.contains(&0) {
+        // UTF-16 text without a byte-order mark (or a binary file) reads as NUL bytes
+        // between characters; showing them would say nothing.
+        return Err("line has NUL bytes: UTF-16 or binary data? Save it as UTF-8 text".into());
+    }
+    std::str::from_utf8(bytes).map_err(|_| "line is not valid UTF-8".to_string())
+}
+
 /// The range of `line` without its `#` comment, outer ASCII whitespace (including `\r`) and,
 /// on the first line, a UTF-8 byte-order mark. Both ends fall on character boundaries.
 fn content(line: &[u8], first: bool) -> std::ops::Range<usize> {
     let start = if first && line.starts_with(b"\xEF\xBB\xBF") { 3 } else { 0 };
-    let end = line.iter().position(|&b| b == b'#').unwrap_or(line.len()).max(start);
+    let end = memchr::memchr(b'#', line).unwrap_or(line.len()).max(start);
     let body = &line[start..end];
     let lead = body.iter().take_while(|b| b.is_ascii_whitespace()).count();
     let trail = body[lead..].iter().rev().take_while(|b| b.is_ascii_whitespace()).count();

@@ -1,7 +1,8 @@
 //! Readers for point files (plain `x y` and Dey's `.gtn`) and edge files (`i j`).
 //!
-//! Input is streamed line by line through a reused buffer, so memory stays bounded by the
-//! longest line, which is capped at [`MAX_LINE`] bytes. Everywhere, blank lines are skipped,
+//! Input is streamed: the edge and `.gtn` readers go line by line through a reused buffer, the
+//! plain reader in batches of blocks of whole lines (parsed in parallel), so memory stays
+//! bounded by a few MiB plus the longest line, which is capped at [`MAX_LINE`] bytes. Everywhere, blank lines are skipped,
 //! `#` starts a comment that runs to the end of the line, and `\r\n` line endings are
 //! accepted. Every problem is an [`Error::Parse`] naming the file and the 1-based line.
 //!
@@ -17,7 +18,7 @@ use std::io::{BufRead, BufReader};
 use std::path::Path;
 
 use super::gtn::{gtn, is_gtn_header};
-use super::lines::{coordinate, fields, pair, too_many, Lines};
+use super::lines::{coordinate, fields, pair, too_many, Block, Lines};
 use crate::error::{Error, Result};
 use crate::geometry::Point;
 
@@ -102,30 +103,89 @@ pub fn parse_points_at_most<R: BufRead>(
     }
 }
 
-/// Plain points: two numbers a line; the first line with content may be a header.
+/// Bytes of input per block of lines, and blocks read before they are parsed, in parallel.
+const BLOCK: usize = 1 << 18;
+const BATCH: usize = 16;
+
+/// Plain points: two numbers a line; the first line with content may be a header. The
+/// first line is read on its own; the rest in batches of [`BLOCK`]-byte blocks of whole
+/// lines, each block parsed on its own (in parallel when the pool has several threads) and
+/// the results joined in order, so points, errors and their line numbers are the same as
+/// reading line by line.
 fn plain<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result<Vec<Point>> {
+    plain_in_blocks(lines, max_points, BLOCK, BATCH)
+}
+
+/// [`plain`] with blocks of `block` bytes, `batch` at a time.
+fn plain_in_blocks<R: BufRead>(
+    lines: &mut Lines<R>,
+    max_points: usize,
+    block: usize,
+    batch: usize,
+) -> Result<Vec<Point>> {
     let mut points = Vec::new();
-    let mut first = true;
-    while let Some(line) = lines.next_content()? {
-        let point = match xy(line) {
-            Ok(p) => Ok(Some(p)),
-            Err(message) if first => match foreign_format(line) {
-                Some(format) => Err(format!(
-                    "this is {format}, not a point file: write one point per line ('x y' or \
-                     'x,y')"
-                )),
-                None if is_header(line) => Ok(None),
-                None => Err(message),
+    if let Some(line) = lines.next_content()? {
+        match xy(line) {
+            Ok(point) => points.push(point),
+            Err(message) => match foreign_format(line) {
+                Some(format) => {
+                    return Err(lines.error(format!(
+                        "this is {format}, not a point file: write one point per line ('x y' \
+                         or 'x,y')"
+                    )))
+                }
+                None if is_header(line) => {}
+                None => return Err(lines.error(message)),
             },
-            Err(message) => Err(message),
-        };
-        first = false;
-        points.extend(point.map_err(|message| lines.error(message))?);
+        }
         if points.len() > max_points {
             return Err(lines.error(too_many(max_points)));
         }
     }
-    Ok(points)
+    loop {
+        let mut blocks = Vec::with_capacity(batch);
+        while blocks.len() < batch {
+            match lines.next_block(block)? {
+                Some(block) => blocks.push(block),
+                None => break,
+            }
+        }
+        if blocks.is_empty() {
+            return Ok(points);
+        }
+        let room = max_points - points.len();
+        let parsed = crate::parallel::map_each(&blocks, |block| plain_block(block, room));
+        for (block, (mut found, mut problem)) in blocks.iter().zip(parsed) {
+            let room = max_points - points.len();
+            if found.len() > room {
+                // Earlier blocks left less room than this one was parsed with.
+                (found, problem) = plain_block(block, room);
+            }
+            points.append(&mut found);
+            if let Some((line, message)) = problem {
+                let message = message.unwrap_or_else(|| too_many(max_points));
+                return Err(lines.error_at(line, message));
+            }
+        }
+    }
+}
+
+/// The points of one block, at most `room` of them, and the first problem: the line and
+/// its message, or no message for a point past `room` (the error names the limit).
+fn plain_block(block: &Block, room: usize) -> (Vec<Point>, Option<(usize, Option<String>)>) {
+    let mut points = Vec::new();
+    for line in block.contents() {
+        let (number, text) = match line {
+            Ok(line) => line,
+            Err((number, message)) => return (points, Some((number, Some(message)))),
+        };
+        match xy(text) {
+            Err(message) => return (points, Some((number, Some(message)))),
+            Ok(_) if points.len() == room => return (points, Some((number, None))),
+            Ok(point) => points.push(point),
+        }
+    }
+    (points, None)
 }
 
 /// A plain point line: exactly two finite numbers.
@@ -191,9 +251,100 @@ fn is_header(line: &str) -> bool {
 mod tests {
     use super::*;
     use crate::io::read::lines::tests::error;
+    use crate::io::read::lines::MAX_LINE;
 
     fn parse(text: &str, format: Option<PointFormat>) -> Result<Vec<Point>> {
         parse_points(text.as_bytes(), "t.xy", format)
+    }
+
+    /// The plain reader one line at a time, as it was before blocks: the reference.
+    fn plain_by_line(text: &[u8], max_points: usize) -> Result<Vec<Point>> {
+        let mut lines = Lines::new(text, "t.xy");
+        let mut points = Vec::new();
+        let mut first = true;
+        while let Some(line) = lines.next_content()? {
+            let point = match xy(line) {
+                Ok(p) => Ok(Some(p)),
+                Err(message) if first => match foreign_format(line) {
+                    Some(format) => Err(format!("this is {format}")),
+                    None if is_header(line) => Ok(None),
+                    None => Err(message),
+                },
+                Err(message) => Err(message),
+            };
+            first = false;
+            points.extend(point.map_err(|message| lines.error(message))?);
+            if points.len() > max_points {
+                return Err(lines.error(too_many(max_points)));
+            }
+        }
+        Ok(points)
+    }
+
+    #[test]
+    fn blocks_read_what_lines_read() {
+        // Random files of valid and broken lines, read in blocks of a few bytes (lines and
+        // `\r\n` cut across blocks, several batches) with random point limits: the same
+        // points, or the same error on the same line, as reading line by line.
+        let pieces: [&[u8]; 12] = [
+            b"1 2\n",
+            b"-3.5,4e2\r\n",
+            b"\n",
+            b"  # note\n",
+            b"5\t6 # x\n",
+            b"7 8",
+            b"9 x\n",
+            b"1 2 3\n",
+            b"0 nan\n",
+            b"1 \xE9\n",
+            b"1\x002\n",
+            b"x y\n",
+        ];
+        let mut rng = crate::samplers::Rng::new(11);
+        for case in 0..3000 {
+            let lines = 1 + rng.below(40);
+            let broken = rng.below(4) == 0;
+            let mut text = Vec::new();
+            for _ in 0..lines {
+                // Mostly good lines; broken pieces in a quarter of the files.
+                let k = if broken { rng.below(pieces.len()) } else { rng.below(6) };
+                text.extend_from_slice(pieces[k]);
+                if k == 5 {
+                    text.push(b'\n'); // "7 8" then a line ending, unless last
+                }
+            }
+            if rng.below(2) == 0 && text.last() == Some(&b'\n') {
+                text.pop();
+            }
+            let max_points = if rng.below(3) == 0 { rng.below(lines + 1) } else { usize::MAX };
+            let (block, batch) = (1 + rng.below(24), 1 + rng.below(4));
+            let mut reader = Lines::new(&text[..], "t.xy");
+            let got = plain_in_blocks(&mut reader, max_points, block, batch);
+            let want = plain_by_line(&text, max_points);
+            let shown = |r: &Result<Vec<Point>>| match r {
+                Ok(points) => format!("{points:?}"),
+                Err(e) => e.to_string().split(": this is").next().unwrap().to_string(),
+            };
+            let text = String::from_utf8_lossy(&text);
+            assert_eq!(shown(&got), shown(&want), "case {case}, {block}x{batch}: {text:?}");
+        }
+    }
+
+    #[test]
+    fn a_long_line_after_the_first_is_refused_with_bounded_reading() {
+        let mut text = b"0 0\n1 1\n".to_vec();
+        text.extend(std::iter::repeat_n(b'1', MAX_LINE + 1));
+        text.extend_from_slice(b" 2\n3 3\n");
+        assert_eq!(
+            error(parse(std::str::from_utf8(&text).unwrap(), None)),
+            "3: line longer than 1048576 bytes"
+        );
+        // At the limit it is a (bad) point, read whole.
+        let mut text = b"0 0\n".to_vec();
+        text.extend(std::iter::repeat_n(b'1', MAX_LINE - 2));
+        text.extend_from_slice(b" 2\n");
+        let e = error(parse(std::str::from_utf8(&text).unwrap(), None));
+        assert!(e.starts_with("2: coordinate"), "{e}");
     }
 
     #[test]
