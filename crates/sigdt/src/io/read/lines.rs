@@ -327,6 +327,11 @@ pub(super) mod tests {
         let result = parse_edges(BufReader::new(&mut endless), "t.xy");
         assert_eq!(error(result), "1: line longer than 1048576 bytes");
         assert!(endless.1 <= MAX_LINE + (64 << 10));
+        // The same after the first line, which the plain reader reads apart from the rest.
+        let mut endless = Counting(b"0 0\n1 1\n".chain(std::io::repeat(b'1')), 0);
+        let result = parse_points(BufReader::new(&mut endless), "t.xy", None);
+        assert_eq!(error(result), "3: line longer than 1048576 bytes");
+        assert!(endless.1 <= MAX_LINE + (1 << 18) + (64 << 10), "read {}", endless.1);
         // Exactly at the limit is fine.
         let mut line = vec![b' '; MAX_LINE - 3];
         line.extend_from_slice(b"1 2\n3 4");
