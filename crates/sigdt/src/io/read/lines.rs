@@ -25,12 +25,15 @@ pub(super) struct Lines<'a, R> {
     pub(super) number: usize,
     /// Whether the next call to `next_content` returns the current line again.
     unread: bool,
+    /// Whether the reader has reported the end of input: it is not asked again (a terminal
+    /// would wait for a second end-of-file).
+    eof: bool,
 }
 
 impl<'a, R: BufRead> Lines<'a, R> {
     pub(super) fn new(reader: R, name: &'a str) -> Self {
         let buf = Vec::with_capacity(256);
-        Lines { reader, name, buf, content: 0..0, number: 0, unread: false }
+        Lines { reader, name, buf, content: 0..0, number: 0, unread: false, eof: false }
     }
 
     /// The next line with content, without its comment and outer whitespace; `None` at the
@@ -64,12 +67,16 @@ impl<'a, R: BufRead> Lines<'a, R> {
         let mut last_start = 0;
         let mut newlines = 0;
         loop {
+            if self.eof {
+                break;
+            }
             let chunk = match self.reader.fill_buf() {
                 Ok(chunk) => chunk,
                 Err(e) if e.kind() == ErrorKind::Interrupted => continue,
                 Err(source) => return Err(Error::Io { path: self.name.to_string(), source }),
             };
             if chunk.is_empty() {
+                self.eof = true;
                 break;
             }
             let take = if bytes.len() < size {
@@ -118,12 +125,16 @@ impl<'a, R: BufRead> Lines<'a, R> {
         self.buf.clear();
         let mut any = false;
         loop {
+            if self.eof {
+                break;
+            }
             let chunk = match self.reader.fill_buf() {
                 Ok(chunk) => chunk,
                 Err(e) if e.kind() == ErrorKind::Interrupted => continue,
                 Err(source) => return Err(Error::Io { path: self.name.to_string(), source }),
             };
             if chunk.is_empty() {
+                self.eof = true;
                 break;
             }
             any = true;
@@ -314,6 +325,26 @@ pub(super) mod tests {
             let n = self.0.read(buf)?;
             self.1 += n;
             Ok(n)
+        }
+    }
+
+    /// A reader that counts the reads that found the end of input.
+    struct EndCounting<R>(R, usize);
+    impl<R: Read> Read for EndCounting<R> {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            let n = self.0.read(buf)?;
+            self.1 += usize::from(n == 0 && !buf.is_empty());
+            Ok(n)
+        }
+    }
+
+    #[test]
+    fn the_end_of_input_is_read_once() {
+        // A terminal answers every read after Ctrl-D with a new wait: read past the end once.
+        for text in ["", "x y\n", "1 2\n3 4", "# c\n1 2\n\n"] {
+            let mut input = EndCounting(text.as_bytes(), 0);
+            parse_points(BufReader::new(&mut input), "t.xy", None).unwrap();
+            assert_eq!(input.1, 1, "{text:?}");
         }
     }
 
