@@ -2,10 +2,9 @@
 //!
 //! Input is streamed line by line through a reused buffer, or in blocks of whole lines, so
 //! memory stays bounded by the block size plus the longest line, which is capped at
-//! [`MAX_LINE`] bytes. Blank lines are skipped, `#` starts
-//! a comment that runs to the end of the line, `\r\n` line endings and a UTF-8 byte-order
-//! mark are accepted, and every problem is an [`Error::Parse`] naming the file and the
-//! 1-based line.
+//! [`MAX_LINE`] bytes. Blank lines are skipped, `#` starts a comment that runs to the end of
+//! the line, `\r\n` line endings and a UTF-8 byte-order mark are accepted, and every problem
+//! is an [`Error::Parse`] naming the file and the 1-based line.
 
 use std::io::{BufRead, ErrorKind};
 
@@ -28,12 +27,24 @@ pub(super) struct Lines<'a, R> {
     /// Whether the reader has reported the end of input: it is not asked again (a terminal
     /// would wait for a second end-of-file).
     eof: bool,
+    /// A reading error [`Lines::next_block`] found after whole lines, which it returned
+    /// first: it comes at the next call, after any problem on those lines.
+    failed: Option<Error>,
 }
 
 impl<'a, R: BufRead> Lines<'a, R> {
     pub(super) fn new(reader: R, name: &'a str) -> Self {
         let buf = Vec::with_capacity(256);
-        Lines { reader, name, buf, content: 0..0, number: 0, unread: false, eof: false }
+        Lines {
+            reader,
+            name,
+            buf,
+            content: 0..0,
+            number: 0,
+            unread: false,
+            eof: false,
+            failed: None,
+        }
     }
 
     /// The next line with content, without its comment and outer whitespace; `None` at the
@@ -59,9 +70,13 @@ impl<'a, R: BufRead> Lines<'a, R> {
 
     /// The next lines, whole, as one [`Block`] of about `size` bytes (more when its last line
     /// runs past them); `None` at the end of input. Lines are not checked here, but for the
-    /// last one's length: reading stops with an error as soon as it exceeds [`MAX_LINE`],
-    /// so memory stays bounded by `size + MAX_LINE`.
+    /// last one's length: reading stops as soon as it exceeds [`MAX_LINE`], so memory stays
+    /// bounded by `size + MAX_LINE`. A reading error (such a line, or I/O) is returned once
+    /// the lines before it are: those may have a problem that comes first.
     pub(super) fn next_block(&mut self, size: usize) -> Result<Option<Block>> {
+        if let Some(error) = self.failed.take() {
+            return Err(error);
+        }
         let mut bytes = Vec::with_capacity(size + 256);
         // Where the last, possibly unfinished, line of `bytes` starts.
         let mut last_start = 0;
@@ -70,36 +85,48 @@ impl<'a, R: BufRead> Lines<'a, R> {
             if self.eof {
                 break;
             }
-            let chunk = match self.reader.fill_buf() {
-                Ok(chunk) => chunk,
+            let failure = match self.reader.fill_buf() {
                 Err(e) if e.kind() == ErrorKind::Interrupted => continue,
-                Err(source) => return Err(Error::Io { path: self.name.to_string(), source }),
+                Err(source) => Error::Io { path: self.name.to_string(), source },
+                Ok([]) => {
+                    self.eof = true;
+                    break;
+                }
+                Ok(chunk) => {
+                    let take = if bytes.len() < size {
+                        chunk.len().min(size - bytes.len())
+                    } else {
+                        // Past the size: to the end of the current line.
+                        memchr::memchr(b'\n', chunk).map_or(chunk.len(), |i| i + 1)
+                    };
+                    let start = bytes.len();
+                    bytes.extend_from_slice(&chunk[..take]);
+                    self.reader.consume(take);
+                    let added = &bytes[start..];
+                    if let Some(last) = memchr::memrchr(b'\n', added) {
+                        newlines += memchr::memchr_iter(b'\n', added).count();
+                        last_start = start + last + 1;
+                    }
+                    if bytes.len() - last_start <= MAX_LINE {
+                        if bytes.len() >= size && last_start == bytes.len() {
+                            break;
+                        }
+                        continue;
+                    }
+                    Error::Parse {
+                        path: self.name.to_string(),
+                        line: self.number + newlines + 1,
+                        message: format!("line longer than {MAX_LINE} bytes"),
+                    }
+                }
             };
-            if chunk.is_empty() {
-                self.eof = true;
-                break;
+            if last_start == 0 {
+                return Err(failure);
             }
-            let take = if bytes.len() < size {
-                chunk.len().min(size - bytes.len())
-            } else {
-                // Past the size: to the end of the current line.
-                memchr::memchr(b'\n', chunk).map_or(chunk.len(), |i| i + 1)
-            };
-            let start = bytes.len();
-            bytes.extend_from_slice(&chunk[..take]);
-            self.reader.consume(take);
-            let added = &bytes[start..];
-            if let Some(last) = memchr::memrchr(b'\n', added) {
-                newlines += memchr::memchr_iter(b'\n', added).count();
-                last_start = start + last + 1;
-            }
-            if bytes.len() - last_start > MAX_LINE {
-                self.number += newlines + 1;
-                return Err(self.error(format!("line longer than {MAX_LINE} bytes")));
-            }
-            if bytes.len() >= size && bytes.last() == Some(&b'\n') {
-                break;
-            }
+            // The whole lines before it first.
+            self.failed = Some(failure);
+            bytes.truncate(last_start);
+            break;
         }
         if bytes.is_empty() {
             return Ok(None);

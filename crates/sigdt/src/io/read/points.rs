@@ -1,10 +1,11 @@
 //! Readers for point files (plain `x y` and Dey's `.gtn`) and edge files (`i j`).
 //!
-//! Input is streamed: the edge and `.gtn` readers go line by line through a reused buffer, the
-//! plain reader in batches of blocks of whole lines (parsed in parallel), so memory stays
-//! bounded by a few MiB plus the longest line, which is capped at [`MAX_LINE`] bytes. Everywhere, blank lines are skipped,
-//! `#` starts a comment that runs to the end of the line, and `\r\n` line endings are
-//! accepted. Every problem is an [`Error::Parse`] naming the file and the 1-based line.
+//! Input is streamed: the edge and `.gtn` readers go line by line through a reused buffer,
+//! the plain reader in batches of blocks of whole lines (parsed in parallel), so memory stays
+//! bounded by a few MiB plus the longest line, which is capped at [`MAX_LINE`] bytes.
+//! Everywhere, blank lines are skipped, `#` starts a comment that runs to the end of the
+//! line, and `\r\n` line endings are accepted. Every problem is an [`Error::Parse`] naming
+//! the file and the 1-based line.
 //!
 //! - **Plain**: one point a line, two numbers separated by spaces or tabs, or by one comma
 //!   with optional spaces around it (`1.5 2`, `1.5,2`, `1.5, 2`). The first line may be a
@@ -144,14 +145,20 @@ fn plain_in_blocks<R: BufRead>(
     }
     loop {
         let mut blocks = Vec::with_capacity(batch);
+        // A reading error comes after any problem on the lines read before it.
+        let mut failed = None;
         while blocks.len() < batch {
-            match lines.next_block(block)? {
-                Some(block) => blocks.push(block),
-                None => break,
+            match lines.next_block(block) {
+                Ok(Some(block)) => blocks.push(block),
+                Ok(None) => break,
+                Err(error) => {
+                    failed = Some(error);
+                    break;
+                }
             }
         }
         if blocks.is_empty() {
-            return Ok(points);
+            return failed.map_or(Ok(points), Err);
         }
         let room = max_points - points.len();
         let parsed = crate::parallel::map_each(&blocks, |block| plain_block(block, room));
@@ -166,6 +173,9 @@ fn plain_in_blocks<R: BufRead>(
                 let message = message.unwrap_or_else(|| too_many(max_points));
                 return Err(lines.error_at(line, message));
             }
+        }
+        if let Some(error) = failed {
+            return Err(error);
         }
     }
 }
@@ -345,6 +355,19 @@ mod tests {
         text.extend_from_slice(b" 2\n");
         let e = error(parse(std::str::from_utf8(&text).unwrap(), None));
         assert!(e.starts_with("2: coordinate"), "{e}");
+    }
+
+    #[test]
+    fn a_problem_before_a_long_line_comes_first() {
+        let long = "1".repeat(MAX_LINE + 1);
+        for (text, max, expected) in [
+            (format!("0 0\n1 x\n{long}\n"), usize::MAX, "2: 'x' is not a number"),
+            (format!("0 0\n1 1\n2 2\n{long}\n"), 2, format!("3: {}", too_many(2)).leak()),
+            (format!("0 0\n1 1\n{long}\n1 x\n"), usize::MAX, "3: line longer than 1048576 bytes"),
+        ] {
+            let result = parse_points_at_most(text.as_bytes(), "t.xy", None, max);
+            assert_eq!(error(result), expected);
+        }
     }
 
     #[test]
