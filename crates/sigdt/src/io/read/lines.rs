@@ -201,42 +201,34 @@ impl Block {
     /// `(line number, content)` of every line with content, in order, or the number and
     /// message of the first line that is too long or whose content is not UTF-8 text
     /// (checked as each line is reached, as [`Lines::next_content`] does).
-    pub(super) fn contents(&self) -> Box<dyn Iterator<Item = Content<'_>> + '_> {
+    pub(super) fn contents(
+        &self,
+    ) -> impl Iterator<Item = Result<(usize, &str), (usize, String)>> + '_ {
         let body = self.bytes.strip_suffix(b"\n").unwrap_or(&self.bytes);
-        let ends = memchr::memchr_iter(b'\n', body).chain([body.len()]);
-        let starts = std::iter::once(0).chain(memchr::memchr_iter(b'\n', body).map(|i| i + 1));
-        let lines = starts.zip(ends).zip(self.first_line..);
-        let too_long = |number| Err((number, format!("line longer than {MAX_LINE} bytes")));
+        let mut next_start = 0;
+        let lines = memchr::memchr_iter(b'\n', body).chain([body.len()]).map(move |end| {
+            let start = std::mem::replace(&mut next_start, end + 1);
+            start..end
+        });
         // One check of the whole block costs less than one a line; a block that fails it
         // (the fault may be in a comment, which is allowed) is checked line by line.
-        if memchr::memchr(0, body).is_none() {
-            if let Ok(text) = std::str::from_utf8(body) {
-                return Box::new(lines.filter_map(move |((start, end), number)| {
-                    if end - start > MAX_LINE {
-                        return Some(too_long(number));
-                    }
-                    let range = content(&body[start..end], false);
-                    let line = &text[start + range.start..start + range.end];
-                    (!line.is_empty()).then_some(Ok((number, line)))
-                }));
-            }
-        }
-        Box::new(lines.filter_map(move |((start, end), number)| {
-            let line = &body[start..end];
+        let checked = memchr::memchr(0, body).is_none().then(|| std::str::from_utf8(body).ok());
+        let checked = checked.flatten();
+        lines.zip(self.first_line..).filter_map(move |(line, number)| {
             if line.len() > MAX_LINE {
-                return Some(too_long(number));
+                return Some(Err((number, format!("line longer than {MAX_LINE} bytes"))));
             }
-            let range = content(line, false);
-            if range.is_empty() {
-                return None;
-            }
-            Some(self::text(&line[range]).map(|text| (number, text)).map_err(|m| (number, m)))
-        }))
+            let range = content(&body[line.clone()], false);
+            let range = line.start + range.start..line.start + range.end;
+            let text = match checked {
+                _ if range.is_empty() => return None,
+                Some(all) => Ok(&all[range]),
+                None => text(&body[range]),
+            };
+            Some(text.map(|text| (number, text)).map_err(|message| (number, message)))
+        })
     }
 }
-
-/// A line of a [`Block`] with content: its number and content, or its number and problem.
-pub(super) type Content<'b> = Result<(usize, &'b str), (usize, String)>;
 
 /// A line's content as text: refused if it has NUL bytes or is not UTF-8.
 fn text(bytes: &[u8]) -> Result<&str, String> {
