@@ -37,15 +37,19 @@ def _threads(n_jobs: Any) -> int | None:
 
 
 def _warn_about(results: list[Reconstruction], many: bool) -> None:
-    # Which statuses warn is decided once, in Rust (Status::is_warning).
-    bad = [(k, r) for k, r in enumerate(results) if r._fields["status_warns"]]
+    # What warns is decided once, in Rust (Reconstruction::warns: the status or a finding of
+    # the sampling check).
+    bad = [(k, r) for k, r in enumerate(results) if r.warns]
     if not bad:
         return
     k, first = bad[0]
     where = f"point set {k}" + (f" (and {len(bad) - 1} more)" if len(bad) > 1 else "")
-    what = first._fields["status_message"]
+    found = [f["message"] for f in first.diagnosis]
+    if first._fields["status_is_warning"]:
+        found.insert(0, f"{first.status}: {first._fields['status_message']}")
+    what = "; ".join(found) + " (the result may not be the points' curves)"
     # stacklevel 3: the warning points at the caller of reconstruct / reconstruct_many.
-    text = f"{where}: {first.status}: {what}" if many else f"{first.status}: {what}"
+    text = f"{where}: {what}" if many else what
     warnings.warn(text, SigdtWarning, stacklevel=3)
 
 

@@ -7,6 +7,11 @@ from typing import TypedDict
 import numpy as np
 import numpy.typing as npt
 
+# One finding of the sampling check (``sigdt.Finding``).
+_Finding = TypedDict(
+    "_Finding", {"kind": str, "count": int, "worst": float, "at": int, "message": str}
+)
+
 # What ``reconstruct`` hands over, by name (``python/sigdt/_result.py`` keeps it as is).
 # Loops and paths are flat: chain ``k`` is ``vertices[offsets[k]:offsets[k + 1]]``.
 _Reconstruction = TypedDict(
@@ -20,6 +25,8 @@ _Reconstruction = TypedDict(
         "status": str,
         "status_message": str,
         "status_warns": bool,
+        "status_is_warning": bool,
+        "diagnosis": list[_Finding],
         "left_out": npt.NDArray[np.int64],
         "left_out_reasons": list[str],
         "vertices": str,  # "input", "moved" or "new"

@@ -8,7 +8,7 @@ import numpy as np
 import numpy.typing as npt
 
 from . import _core
-from ._types import GeoJsonFeature, LeftOutReason, Status, VerticesKind
+from ._types import Finding, GeoJsonFeature, LeftOutReason, Status, VerticesKind
 
 if TYPE_CHECKING:  # pragma: no cover
     import shapely
@@ -92,6 +92,14 @@ class Reconstruction:
     left_out_reasons : list of str
         Why each point of ``left_out`` was left out, in the same order: ``"inside"``,
         ``"outlier"``, ``"eliminated"``, ``"non-conforming"`` or ``"unresolved"``.
+    diagnosis : list of dict
+        What the sampling check found, as dicts with ``kind``, ``count``, ``worst``, ``at``
+        and ``message``: where the loops and paths break the sampling condition they
+        assume, with how much and at which point. Empty when the result reads as a sampled curve. A non-empty list, like a warning
+        status, comes with a :class:`sigdt.SigdtWarning`; see ``warns``.
+    warns : bool
+        Whether the result may not be the curves the points came from (a warning status or
+        a finding); ``reconstruct`` then raises a :class:`sigdt.SigdtWarning`.
     duplicates : numpy.ndarray
         ``(d, 2)`` int64 rows ``[duplicate, representative]``; duplicates get no edges.
     stats : dict
@@ -143,6 +151,14 @@ class Reconstruction:
     @property
     def left_out_reasons(self) -> list[LeftOutReason]:
         return cast("list[LeftOutReason]", self._fields["left_out_reasons"])
+
+    @property
+    def diagnosis(self) -> list[Finding]:
+        return cast("list[Finding]", self._fields["diagnosis"])
+
+    @property
+    def warns(self) -> bool:
+        return self._fields["status_warns"]
 
     @property
     def duplicates(self) -> Indices:

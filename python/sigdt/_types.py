@@ -9,6 +9,7 @@ from typing import Literal, TypedDict
 
 __all__ = [
     "Evaluation",
+    "Finding",
     "GeoJsonFeature",
     "GraphOverlap",
     "LeftOutReason",
@@ -89,9 +90,33 @@ class GraphOverlap(TypedDict):
     contains_gt_knn4: bool
 
 
+#: What the sampling check can find (the ``kind`` of a finding).
+FindingKind = Literal["passes-over-samples", "doubles-back", "small-loops", "open-ends"]
+
+
+class Finding(TypedDict):
+    """One finding of the sampling check (:attr:`sigdt.Reconstruction.diagnosis`): where the
+    result breaks the sampling condition it assumes.
+
+    ``kind`` is ``"passes-over-samples"`` (edges whose diametral disk holds another point at
+    least 2 point spacings deep), ``"doubles-back"`` (the curve turns by more than 150
+    degrees between two edges each at least 4 times the spacing at its far end) or
+    ``"small-loops"`` (loops of fewer than seven points, which no closed curve sampled within
+    the condition gives) or ``"open-ends"`` (an open path ends next to points nearer than
+    half its last edge: the curve may go on there); ``count`` edges, points or loops show it; ``worst`` is the deepest
+    reach in point spacings, the sharpest turn in degrees or the size of the smallest loop,
+    at input index ``at``; ``message`` is the sentence front ends print."""
+
+    kind: FindingKind
+    count: int
+    worst: float
+    at: int
+    message: str
+
+
 class GeoJsonFeature(TypedDict):
     """What :meth:`sigdt.Reconstruction.to_geojson` returns: a GeoJSON ``Feature``."""
 
     type: Literal["Feature"]
     geometry: dict[str, object] | None
-    properties: dict[str, str | int | list[int] | list[str]]
+    properties: dict[str, str | int | bool | list[int] | list[str] | list[Finding]]

@@ -104,7 +104,9 @@ def from_shapely(geometry: object) -> Coordinates:
 
 def to_geojson(rec: Reconstruction) -> GeoJsonFeature:
     """A GeoJSON ``Feature``: the geometry of :func:`to_shapely` (without needing shapely),
-    with status and counts as properties."""
+    with status and counts as properties, the points left out with their reasons, whether
+    the result warns, and the sampling check's findings (as ``sigdt reconstruct --format
+    geojson`` writes them)."""
     loops, paths = rec.loops, rec.paths
     properties: dict[str, Any] = {
         "status": rec.status,
@@ -117,6 +119,9 @@ def to_geojson(rec: Reconstruction) -> GeoJsonFeature:
     if len(rec.left_out):
         properties["left_out"] = rec.left_out.tolist()
         properties["left_out_reasons"] = list(rec.left_out_reasons)
+    properties["warning"] = rec.warns
+    if rec.diagnosis:
+        properties["diagnosis"] = list(rec.diagnosis)
     return {"type": "Feature", "geometry": _geometry(rec), "properties": properties}
 
 

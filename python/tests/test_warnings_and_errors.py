@@ -104,3 +104,29 @@ def test_input_that_loses_nothing_is_read():
     assert sigdt.reconstruct(unmasked) == sigdt.reconstruct(square)
     assert sigdt.reconstruct([]).status == "too-few-points"
     assert sigdt.reconstruct(np.zeros((0, 2))).status == "too-few-points"
+
+
+def test_a_result_that_breaks_the_sampling_condition_warns_with_its_findings():
+    # A circle of 60 samples and, beside it, a knot of five points: no closed curve
+    # sampled within the condition gives a loop of five.
+    knot = 3.0 + 0.05 * circle(5)
+    with pytest.warns(sigdt.SigdtWarning, match=r"fewer than 7 points") as caught:
+        rec = sigdt.reconstruct(np.r_[circle(), knot])
+    assert caught[0].filename == __file__
+    assert rec.status == "polygons" and rec.warns
+    [finding] = rec.diagnosis
+    assert (finding["kind"], finding["count"], finding["worst"], finding["at"]) == (
+        "small-loops",
+        1,
+        5.0,
+        60,
+    )
+    assert "the result may not be the points' curves" in str(caught[0].message)
+    properties = rec.to_geojson()["properties"]
+    assert properties["warning"] is True and properties["diagnosis"] == rec.diagnosis
+
+
+def test_a_faithful_result_has_an_empty_diagnosis():
+    rec = sigdt.reconstruct(circle())
+    assert rec.diagnosis == [] and not rec.warns
+    assert rec.to_geojson()["properties"]["warning"] is False

@@ -5,7 +5,7 @@ use numpy::{
 };
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyList};
 use sigdt::{Edge, Point, Reconstruction, Vertices};
 
 // The exception classes are Python's (`python/sigdt/errors.py`), so that they can derive
@@ -166,7 +166,19 @@ pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bo
     dict.set_item("path_offsets", path_offsets)?;
     dict.set_item("status", rec.status.name())?;
     dict.set_item("status_message", rec.status.to_string())?;
-    dict.set_item("status_warns", rec.status.is_warning())?;
+    dict.set_item("status_warns", rec.warns())?;
+    dict.set_item("status_is_warning", rec.status.is_warning())?;
+    let diagnosis = PyList::empty(py);
+    for f in &rec.diagnosis {
+        let finding = PyDict::new(py);
+        finding.set_item("kind", f.kind.name())?;
+        finding.set_item("count", f.count)?;
+        finding.set_item("worst", f.worst)?;
+        finding.set_item("at", f.at)?;
+        finding.set_item("message", f.to_string())?;
+        diagnosis.append(finding)?;
+    }
+    dict.set_item("diagnosis", diagnosis)?;
     dict.set_item("left_out", indices(py, &left_out))?;
     dict.set_item("left_out_reasons", reasons)?;
     dict.set_item("vertices", kind)?;

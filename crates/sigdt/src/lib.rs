@@ -48,7 +48,10 @@ pub use method::{
     Method, Options,
 };
 pub use proximity::{nearest_neighbour_distances, proximity_graph, proximity_graph_on, GraphKind};
-pub use result::{LeftOut, LeftOutReason, Polygon, Reconstruction, Stats, Status, Vertices};
+pub use result::{
+    Finding, FindingKind, LeftOut, LeftOutReason, Polygon, Reconstruction, Stats, Status, Vertices,
+    DEPTH_RATIO, LONG_EDGE_RATIO, MIN_LOOP_POINTS,
+};
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

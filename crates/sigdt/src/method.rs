@@ -12,7 +12,7 @@ use crate::connect::{inflate_and_sculpt_traced, trace::Trace};
 use crate::delaunay::Triangulation;
 use crate::error::Result;
 use crate::geometry::Point;
-use crate::result::{degenerate_result, from_vertex_pairs, Reconstruction, Stats};
+use crate::result::{degenerate_result, diagnose, from_vertex_pairs, Reconstruction, Stats};
 use crate::{sig_auto, sig_connect2d};
 
 /// A reconstruction method. Spelled in kebab case on the command line and in Python
@@ -173,6 +173,16 @@ fn reconstruct_triangulation(dt: Triangulation, options: &Options) -> Result<Rec
 /// [`reconstruct`] on an existing triangulation of the points, so that one triangulation can
 /// serve several methods and graphs.
 pub fn reconstruct_on(dt: &Triangulation, options: &Options) -> Reconstruction {
+    let mut rec = run_method(dt, options);
+    if options.method != Method::SigAuto {
+        // SIG-AUTO checks its own readings (it reads again when they warn).
+        rec.diagnosis = diagnose(dt, &rec);
+    }
+    rec
+}
+
+/// `options.method` on `dt`, before the sampling check.
+fn run_method(dt: &Triangulation, options: &Options) -> Reconstruction {
     let filter: fn(&Triangulation) -> Vec<[u32; 2]> = match options.method {
         Method::SigConnect2d => {
             return sig_connect2d::sig_connect2d_on(dt, options.leaf_elimination)
@@ -223,7 +233,9 @@ pub fn reconstruct_traced_on(
         Method::Connect2d => baselines::connect2d::bc0(dt),
         _ => return (reconstruct_on(dt, options), None),
     };
-    inflate_and_sculpt_traced(dt, &graph, leaf_edges_added, true)
+    let (mut rec, trace) = inflate_and_sculpt_traced(dt, &graph, leaf_edges_added, true);
+    rec.diagnosis = diagnose(dt, &rec);
+    (rec, trace)
 }
 
 #[cfg(test)]

@@ -47,8 +47,11 @@ pub(crate) fn sig_connect2d_owning(dt: Triangulation, leaf_elimination: bool) ->
         let (graph, leaf_edges_added) = initial_graph(&dt, leaf_elimination);
         outline(&dt, &graph, leaf_edges_added, false)
     };
+    let diagnosis = outline.check(&dt);
     let (input_index, duplicates) = dt.into_input_indices();
-    outline.into_reconstruction(&input_index, duplicates)
+    let mut rec = outline.into_reconstruction(&input_index, duplicates);
+    rec.diagnosis = diagnosis;
+    rec
 }
 
 /// The graph inflating starts from, SIGDT or (with leaf elimination) SIGDT2, and the number

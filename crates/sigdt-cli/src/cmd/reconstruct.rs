@@ -84,9 +84,8 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
     }
     if args.verbose {
         summary(&options, &rec, elapsed);
-    } else if rec.status.is_warning() {
-        note(&format!("sigdt: warning: {}", rec.status));
     }
+    warnings(&rec);
     output.write(|w| format.write(w, &points, &rec))
 }
 
@@ -96,13 +95,34 @@ fn format_parser() -> impl TypedValueParser<Value = OutputFormat> {
     PossibleValuesParser::new(names).try_map(|s| s.parse::<OutputFormat>())
 }
 
-/// How many points the result leaves out, by reason: `0`, or `3 (outlier 2, inside 1)`.
-fn left_out_summary(rec: &Reconstruction) -> String {
-    let mut by_reason: std::collections::BTreeMap<&str, usize> = Default::default();
+/// One stderr line for each thing a user cannot see in the output but must know: that the
+/// result may not be the points' curves (its status, each finding of the sampling check),
+/// and how many points were left out, per reason.
+fn warnings(rec: &Reconstruction) {
+    if rec.status.is_warning() {
+        note(&format!("sigdt: warning: {}", rec.status));
+    }
+    for finding in &rec.diagnosis {
+        note(&format!("sigdt: warning: {finding}: the result may not be the points' curves"));
+    }
+    for (reason, count) in left_out_by_reason(rec) {
+        note(&format!("sigdt: left out {count} point(s): {reason}"));
+    }
+}
+
+/// The number of points left out, per reason name, in name order.
+fn left_out_by_reason(rec: &Reconstruction) -> std::collections::BTreeMap<&'static str, usize> {
+    let mut by_reason = std::collections::BTreeMap::new();
     for l in &rec.left_out {
         *by_reason.entry(l.reason.name()).or_default() += 1;
     }
-    let reasons: Vec<String> = by_reason.iter().map(|(r, k)| format!("{r} {k}")).collect();
+    by_reason
+}
+
+/// How many points the result leaves out, by reason: `0`, or `3 (outlier 2, inside 1)`.
+fn left_out_summary(rec: &Reconstruction) -> String {
+    let reasons: Vec<String> =
+        left_out_by_reason(rec).iter().map(|(r, k)| format!("{r} {k}")).collect();
     match reasons.is_empty() {
         true => "0".to_string(),
         false => format!("{} ({})", rec.left_out.len(), reasons.join(", ")),

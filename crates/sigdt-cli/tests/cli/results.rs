@@ -291,3 +291,40 @@ fn completions_and_man_pages_come_from_the_definitions() {
     assert!(page.contains("no\\-leaf\\-elimination"), "{page}");
     assert!(!dir.path().join("man/sigdt-bench-worker.1").exists());
 }
+
+/// The bundled glyph with noise of 0.8 % of its box (issue 29's example): SIG-CONNECT2D's
+/// polygons zigzag across the strokes, and `reconstruct` says so on stderr (exit 0) and in
+/// its GeoJSON.
+#[test]
+fn a_result_that_breaks_the_sampling_condition_says_so() {
+    let dir = tempdir();
+    let glyph = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/inputs/glyph_n_tilde.xy");
+    let glyph = glyph.to_str().unwrap();
+    let args = ["perturb", glyph, "--noise", "0.008", "--seed", "1", "-o", "g.xy"];
+    sigdt_in(dir.path(), &args, None).expect(0);
+    let run = sigdt_in(dir.path(), &["reconstruct", "g.xy", "-o", "g.edges"], None);
+    run.expect(0);
+    assert!(run.stderr.starts_with("sigdt: warning: "), "{run}");
+    assert!(run.stderr.contains("the result may not be the points' curves"), "{run}");
+    let json = sigdt_in(dir.path(), &["reconstruct", "g.xy", "--format", "geojson"], None);
+    assert!(json.stdout.contains(r#""warning": true, "diagnosis": [{"kind": "#), "{json}");
+    // The clean glyph: no warning, and the GeoJSON says that too.
+    let clean = sigdt_in(dir.path(), &["reconstruct", glyph, "--format", "geojson"], None);
+    assert!(clean.ok().stdout.contains(r#""warning": false}"#), "{clean}");
+}
+
+/// Points left out are counted on stderr without `-v`, one line per reason, and listed in
+/// the GeoJSON with their reasons.
+#[test]
+fn left_out_points_are_reported_without_verbose() {
+    let dir = tempdir();
+    let mut points = circle(60, 1.0);
+    points.push([1.6, 0.05]);
+    write_points(dir.path(), "c.xy", &points);
+    let run = sigdt_in(dir.path(), &["reconstruct", "c.xy", "--method", "sig-auto"], None);
+    run.expect(0);
+    assert_eq!(run.stderr, "sigdt: left out 1 point(s): outlier\n", "{run}");
+    let args = ["reconstruct", "c.xy", "--method", "sig-auto", "--format", "geojson"];
+    let json = sigdt_in(dir.path(), &args, None);
+    assert!(json.stdout.contains(r#""left_out": [60], "left_out_reasons": ["outlier"]"#), "{json}");
+}

@@ -49,6 +49,11 @@ pub(crate) fn vertex_loops(dt: &Triangulation, inside: &[bool], edges: &EdgeMask
 }
 
 impl VertexLoops {
+    /// Each loop's vertices, in boundary order.
+    pub(crate) fn iter(&self) -> impl Iterator<Item = &[u32]> + '_ {
+        self.starts.windows(2).map(|w| &self.vertices[w[0]..w[1]])
+    }
+
     /// The loops as input indices (`input_index[v]` of vertex `v`), each starting at its
     /// smallest index, sorted.
     pub(crate) fn input_loops(&self, input_index: &[u32]) -> Vec<Vec<usize>> {

@@ -90,6 +90,11 @@ pub(crate) fn outline(
 }
 
 impl Outline {
+    /// The sampling check of the loops ([`check_curves`](crate::result::check_curves)).
+    pub(crate) fn check(&self, dt: &Triangulation) -> Vec<crate::result::Finding> {
+        crate::result::check_curves(dt, self.loops.iter().map(|l| (l, true)))
+    }
+
     /// The result: the loops and the points left inside as input indices (`input_index`
     /// of every vertex), the edges of the loops, and the input's `duplicates`.
     pub(crate) fn into_reconstruction(
@@ -119,6 +124,7 @@ impl Outline {
             left_out,
             vertices: Vertices::Input,
             stats: self.stats,
+            diagnosis: Vec::new(),
         }
     }
 }

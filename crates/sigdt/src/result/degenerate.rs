@@ -27,6 +27,7 @@ pub(crate) fn degenerate_result(dt: &Triangulation) -> Option<Reconstruction> {
         duplicates: dt.duplicates().to_vec(),
         left_out: Vec::new(),
         vertices: Vertices::Input,
+        diagnosis: Vec::new(),
         stats: Stats {
             points: dt.input_len(),
             distinct_points: dt.num_vertices(),

@@ -5,10 +5,15 @@
 mod degenerate;
 mod from_edges;
 mod polygons;
+mod sampling_check;
 
 pub(crate) use degenerate::degenerate_result;
 pub(crate) use from_edges::{from_new_vertices, from_vertex_pairs};
 pub use polygons::Polygon;
+pub(crate) use sampling_check::{check_curves, diagnose, doubling_back};
+#[doc(hidden)]
+pub use sampling_check::{measure_curve, EdgeMeasure};
+pub use sampling_check::{Finding, FindingKind, DEPTH_RATIO, LONG_EDGE_RATIO, MIN_LOOP_POINTS};
 
 /// The [`LeftOut`] entries of points left inside when sculpting got stuck (input indices,
 /// sorted).
@@ -48,9 +53,21 @@ pub struct Reconstruction {
     pub vertices: Vertices,
     /// Per-stage counts, for diagnostics and benchmarks.
     pub stats: Stats,
+    /// What the sampling check found: where the loops and paths break the sampling
+    /// condition they assume (edges far longer than the point spacing at both of their
+    /// ends, readings that double back). Empty when the result reads as a sampled curve,
+    /// and for methods that move points or place their own. See [`Finding`].
+    pub diagnosis: Vec<Finding>,
 }
 
 impl Reconstruction {
+    /// True when the result may not be the curves the points came from: its status says so
+    /// ([`Status::is_warning`]) or the sampling check found something ([`Self::diagnosis`]).
+    /// Front ends warn then.
+    pub fn warns(&self) -> bool {
+        self.status.is_warning() || !self.diagnosis.is_empty()
+    }
+
     /// The coordinates the edges, loops and paths index: `input` (the caller's points),
     /// unless the method moved them or placed its own ([`Vertices`]).
     pub fn vertex_positions<'a>(&'a self, input: &'a [Point]) -> &'a [Point] {

@@ -68,6 +68,7 @@
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 mod chain_join;
 mod closed_component;
+mod coarse_reading;
 mod continuation;
 mod outliers;
 mod reading;
@@ -75,13 +76,14 @@ mod shorter_reading;
 mod spanning_forests;
 mod spur_path;
 mod steps;
+mod wired_outliers;
 
 use crate::delaunay::Triangulation;
 use crate::geometry::distance;
 use crate::proximity::sigdt::TIE_SLACK;
 use crate::result::{
-    degenerate_result, from_vertex_pairs, inside_left_out, LeftOut, LeftOutReason, Reconstruction,
-    Stats, Status,
+    degenerate_result, diagnose, from_vertex_pairs, inside_left_out, FindingKind, LeftOut,
+    LeftOutReason, Reconstruction, Stats, Status,
 };
 use crate::sig_connect2d::sig_connect2d_on;
 use chain_join::Chains;
@@ -107,8 +109,77 @@ pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
 /// SIG-AUTO with some of its steps switched off or another gap ratio ([`Steps`]). Not a
 /// user parameter: it exists so that each step can be measured
 /// (`sigdt-lab/examples/sig_auto_ablation.rs`, `sigdt-lab/examples/join_ratio_sweep.rs`).
+///
+/// The result carries the sampling check's findings ([`Reconstruction::diagnosis`]). When
+/// the check finds something or sculpting got stuck, and `steps.coarse` is set, the points are read again at a coarser
+/// scale and then through every point (`coarse_reading`); that reading replaces the first
+/// when it passes the check.
 #[doc(hidden)]
 pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
+    let mut rec = read(dt, steps);
+    rec.diagnosis = diagnose(dt, &rec);
+    if steps.wired_outliers && rec.diagnosis.iter().any(|f| f.kind == FindingKind::DoublesBack) {
+        if let Some(cut) = without_wired_outliers(dt, &rec) {
+            rec = cut;
+        }
+    }
+    // The zigzag test alone (status `noisy`) does not call for another reading: it also
+    // fires on exact readings of jagged polygons given by their vertices.
+    let broken = !rec.diagnosis.is_empty() || matches!(rec.status, Status::SculptingStuck { .. });
+    if !(steps.coarse && broken) {
+        return rec;
+    }
+    match coarse_reading::coarse_reading(dt, steps) {
+        Some(fine) => {
+            let pairs = fine
+                .loops
+                .iter()
+                .flat_map(|l| (0..l.len()).map(move |k| [l[k], l[(k + 1) % l.len()]]));
+            finish(dt, pairs.collect(), Vec::new(), &fine.outliers, rec.stats)
+        }
+        None => rec,
+    }
+}
+
+/// `rec` with the points where it doubles back left out as outliers (`wired_outliers`),
+/// checked again; `None` when there is nothing to cut or sculpting got stuck.
+fn without_wired_outliers(dt: &Triangulation, rec: &Reconstruction) -> Option<Reconstruction> {
+    if matches!(rec.status, Status::SculptingStuck { .. }) {
+        return None;
+    }
+    let vertex_of = dt.vertex_of_inputs();
+    let as_vertices = |c: &Vec<usize>| c.iter().map(|&i| vertex_of[i]).collect::<Vec<u32>>();
+    let mut curves: Vec<(Vec<u32>, bool)> =
+        rec.loops.iter().map(|l| (as_vertices(l), true)).collect();
+    curves.extend(rec.paths.iter().map(|p| (as_vertices(p), false)));
+    let cut = wired_outliers::cut_wired_outliers(dt, &mut curves);
+    if cut.is_empty() {
+        return None;
+    }
+    let mut outliers: Vec<u32> = rec
+        .left_out
+        .iter()
+        .filter(|l| l.reason == LeftOutReason::Outlier)
+        .map(|l| vertex_of[l.index])
+        .collect();
+    outliers.extend(cut);
+    let pairs = curves.iter().flat_map(|(c, closed)| {
+        let n = c.len();
+        let edges = if *closed { n } else { n.saturating_sub(1) };
+        (0..edges).map(move |k| [c[k], c[(k + 1) % n]])
+    });
+    let mut cut_rec = finish(dt, pairs.collect(), Vec::new(), &outliers, rec.stats);
+    // Cutting a point out does not straighten a zigzag elsewhere.
+    let readable = matches!(cut_rec.status, Status::Polygon | Status::Polygons | Status::Curves);
+    if rec.status == Status::Noisy && readable {
+        cut_rec.status = Status::Noisy;
+    }
+    cut_rec.diagnosis = diagnose(dt, &cut_rec);
+    Some(cut_rec)
+}
+
+/// SIG-AUTO's reading of `dt` at the points' own scale (steps 1–6 of the module docs).
+fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     if let Some(result) = degenerate_result(dt) {
         return result;
     }

@@ -28,6 +28,11 @@ pub struct Steps {
     /// The outlier rules keep three or more points closer to one another than to the curve
     /// (a curve of their own).
     pub own_curves: bool,
+    /// When the reading warns, read the points again at a coarser scale and then through
+    /// every point (`coarse_reading`).
+    pub coarse: bool,
+    /// Leave out the points where the reading doubles back (`wired_outliers`).
+    pub wired_outliers: bool,
 }
 
 impl Default for Steps {
@@ -41,6 +46,8 @@ impl Default for Steps {
             continuation: true,
             tangent_rays: true,
             own_curves: true,
+            coarse: true,
+            wired_outliers: true,
         }
     }
 }

@@ -1,10 +1,11 @@
 //! GeoJSON: one `Feature` whose geometry holds the loops and paths and whose properties give
-//! the status and counts (and the points left out, when there are any).
+//! the status and counts, the points left out with their reasons (when there are any),
+//! whether front ends warn, and the sampling check's findings (when there are any).
 use std::io::{self, Write};
 
 use super::geometry::{geometry, write_pair, Kind, Notation};
 use crate::geometry::Point;
-use crate::result::{Reconstruction, Status};
+use crate::result::{Finding, Reconstruction};
 
 /// The GeoJSON notation of geometry objects.
 pub(super) struct GeoJson;
@@ -47,10 +48,31 @@ pub(super) fn geojson(out: &mut Vec<u8>, points: &[Point], rec: &Reconstruction)
     let (k, p, status) = (rec.loops.len(), rec.paths.len(), rec.status.name());
     write!(out, r#", "properties": {{"status": "{status}", "points": {n}, "edges": {m}, "#)?;
     write!(out, r#""loops": {k}, "paths": {p}, "duplicates": {d}"#)?;
-    if let Status::SculptingStuck { left_out } = &rec.status {
-        let left_out: Vec<_> = left_out.iter().map(usize::to_string).collect();
-        write!(out, r#", "left_out": [{}]"#, left_out.join(", "))?;
+    if !rec.left_out.is_empty() {
+        let indices: Vec<_> = rec.left_out.iter().map(|l| l.index.to_string()).collect();
+        let reasons: Vec<_> =
+            rec.left_out.iter().map(|l| format!("\"{}\"", l.reason.name())).collect();
+        write!(out, r#", "left_out": [{}]"#, indices.join(", "))?;
+        write!(out, r#", "left_out_reasons": [{}]"#, reasons.join(", "))?;
+    }
+    write!(out, r#", "warning": {}"#, rec.warns())?;
+    if !rec.diagnosis.is_empty() {
+        let findings: Vec<String> = rec.diagnosis.iter().map(finding_object).collect();
+        write!(out, r#", "diagnosis": [{}]"#, findings.join(", "))?;
     }
     out.extend_from_slice(b"}}\n");
     Ok(())
+}
+
+/// One finding of the sampling check as a JSON object: `kind`, `count`, `worst`, `at` (an
+/// input index) and the `message` front ends print.
+fn finding_object(f: &Finding) -> String {
+    let message = f.to_string().replace('\\', "\\\\").replace('"', "\\\"");
+    format!(
+        r#"{{"kind": "{}", "count": {}, "worst": {}, "at": {}, "message": "{message}"}}"#,
+        f.kind.name(),
+        f.count,
+        f.worst,
+        f.at
+    )
 }

@@ -236,15 +236,29 @@ mod tests {
         use OutputFormat::GeoJson;
         let square = text(GeoJson, &SQUARE, &square());
         let geometry = r#"{"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]]]}, "#;
-        let properties = r#""properties": {"status": "polygon", "points": 4, "edges": 4, "loops": 1, "paths": 0, "duplicates": 0}}"#;
+        let properties = r#""properties": {"status": "polygon", "points": 4, "edges": 4, "loops": 1, "paths": 0, "duplicates": 0, "warning": false}}"#;
         assert_eq!(square, format!("{geometry}{properties}\n"));
         let path = text(GeoJson, &SQUARE, &path());
         let lines = r#"{"type": "MultiLineString", "coordinates": [[[0.0, 0.0], [1.0, 1.0]], [[1.0, 0.0], [0.0, 1.0]]]}"#;
         assert!(path.contains(lines) && path.contains(r#""status": "collinear""#), "{path}");
-        let stuck =
-            Reconstruction { status: Status::SculptingStuck { left_out: vec![2, 5] }, ..empty() };
+        let stuck = Reconstruction {
+            status: Status::SculptingStuck { left_out: vec![2, 5] },
+            left_out: crate::result::inside_left_out(&[2, 5]),
+            ..empty()
+        };
         let stuck = text(GeoJson, &[], &stuck);
         assert!(stuck.contains(r#""geometry": null"#), "{stuck}");
-        assert!(stuck.ends_with("\"duplicates\": 0, \"left_out\": [2, 5]}}\n"), "{stuck}");
+        let end = r#""duplicates": 0, "left_out": [2, 5], "left_out_reasons": ["inside", "inside"], "warning": true}}"#;
+        assert!(stuck.ends_with(&format!("{end}\n")), "{stuck}");
+        let finding = crate::result::Finding {
+            kind: crate::result::FindingKind::SmallLoops,
+            count: 1,
+            worst: 3.0,
+            at: 0,
+        };
+        let flagged = Reconstruction { diagnosis: vec![finding], ..self::square() };
+        let flagged = text(GeoJson, &SQUARE, &flagged);
+        let diagnosis = r#""warning": true, "diagnosis": [{"kind": "small-loops", "count": 1, "worst": 3, "at": 0, "message": "1 loop(s) of fewer than 7 points"#;
+        assert!(flagged.contains(diagnosis), "{flagged}");
     }
 }

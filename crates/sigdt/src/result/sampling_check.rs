@@ -1,0 +1,479 @@
+//! The sampling check: every result read back against the sampling it assumes.
+//!
+//! [MOW22] Theorem 1 holds for curves sampled with ρ < 1 and local non-uniformity u < 2.
+//! Its proof gives two properties of every edge `ab` of the faithful reading, which the check
+//! reads back on a result (`r(v)` is the distance from `v` to its nearest other point):
+//!
+//! 1. **The disk with diameter `ab` is empty** (part 2: `ab` is a Gabriel edge). At a sharp
+//!    corner, where ρ < 1 cannot hold, a curve neighbour `c` of `b` can lie in that disk, but
+//!    no deeper than `|bc|`, and `|bc| < 2 r(b)` by u < 2. So under u < 2 no sample reaches
+//!    **twice the spacing** `2 · max(r(a), r(b))` into the disk, corners included.
+//!    Slivers and bridges between curves break this by far: they pass over the samples
+//!    they skip. Finding [`FindingKind::PassesOverSamples`].
+//! 2. **The nearest neighbour is a curve neighbour** (part 1), so each edge is shorter than
+//!    `2 r` at its ends. An edge at least [`LONG_EDGE_RATIO`] `= 2 · 2` times the spacing at
+//!    its far end (twice the bound) is a long edge there. A reading that turns by more than
+//!    150° at `v` between two edges that are both long at their far ends goes out to `v`
+//!    and comes back: a point wired into a curve it is far from (an outlier), not a sampled
+//!    curve, whose samples turn by less than 60° (ε < 1) and, at a corner, leave along its
+//!    two sides. Finding [`FindingKind::DoublesBack`].
+//!
+//! 3. **A closed curve has at least [`MIN_LOOP_POINTS`] samples**: ρ < 1 is ε < 0.5
+//!    ([MOW22] Corollary 2), and a circle with `n` evenly spread samples has ε = 2 sin(π/2n),
+//!    0.52 for six and 0.45 for seven; any other closed curve needs more. A smaller loop
+//!    beside curves of at least that many points is a knot of noise or a curve sampled too
+//!    sparsely to tell (a result that is nothing but small loops, such as four points read as
+//!    a square, is what was given). Finding [`FindingKind::SmallLoops`].
+//!
+//! 4. **An open curve ends where its samples end**: the end sample's nearest neighbour is its
+//!    curve neighbour (property 2). An open path whose end point has another point nearer
+//!    than half its last edge (so that u < 2 fails there even when doubled) stops short of
+//!    points it could go on through: a curve broken in two, or closed curve read open.
+//!    Finding [`FindingKind::OpenEnds`].
+//!
+//! Long straight sides between dense corners (glyphs, buildings) break u < 2 without being
+//! wrong; their disks are empty, so neither finding fires on them.
+//!
+//! The outcome is a list of [`Finding`]s (empty when the result reads as a sampled curve);
+//! front ends warn on a non-empty list. It is a diagnosis, not a proof: a result without
+//! findings can still be wrong, and a finding does not say which curve the points came from.
+//!
+//! # Complexity
+//! O(k · d) for a result with k vertices of mean Delaunay degree d on readings whose edges
+//! are about the point spacing; an edge that passes over samples costs a walk of at most
+//! [`MAX_WALK`] steps towards its midpoint. No allocation beyond the findings.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+use crate::delaunay::Triangulation;
+use crate::geometry::distance;
+
+/// How far (in point spacings `max(r(a), r(b))`) a sample may reach into the disk with
+/// diameter `ab` before `ab` is reported: twice, the most that a sampling with u < 2 allows
+/// (module docs, property 1).
+pub const DEPTH_RATIO: f64 = 2.0;
+
+/// How many times the spacing at its far end an edge must be to count as long where a
+/// reading doubles back: twice [MOW22] Theorem 1's bound `u < 2` (module docs, property 2).
+///
+/// [MOW22]: https://doi.org/10.1111/cgf.14654
+pub const LONG_EDGE_RATIO: f64 = 4.0;
+
+/// The fewest points of a loop that a closed curve sampled with ρ < 1 (ε < 0.5) gives
+/// (module docs, property 3).
+pub const MIN_LOOP_POINTS: usize = 7;
+
+/// The cosine of the turn beyond which a reading doubles back (150°).
+const DOUBLING_BACK_COS: f64 = -0.866_025_403_784_438_6;
+
+/// What the sampling check found wrong with a result: one entry per kind.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Finding {
+    /// What kind of violation.
+    pub kind: FindingKind,
+    /// How many edges (passing over samples), vertices (doubling back) or loops show it.
+    pub count: usize,
+    /// The worst value: how deep a sample reaches into an edge's disk, in point spacings,
+    /// the sharpest turn in degrees, or the number of points of the smallest small loop.
+    pub worst: f64,
+    /// Input index of a point where the worst value is (an end of the edge, or the vertex
+    /// that turns).
+    pub at: usize,
+}
+
+/// The kinds of [`Finding`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[non_exhaustive]
+pub enum FindingKind {
+    /// Edges whose diametral disk holds a sample at least [`DEPTH_RATIO`] point spacings
+    /// deep: the edge passes over samples it skips (slivers, bridges).
+    PassesOverSamples,
+    /// Vertices where the reading turns by more than 150° between two edges that are each
+    /// at least [`LONG_EDGE_RATIO`] times the spacing at their far end (outliers wired in).
+    DoublesBack,
+    /// Loops of fewer than [`MIN_LOOP_POINTS`] points, which no closed curve sampled with
+    /// ρ < 1 gives, beside a curve of at least that many.
+    SmallLoops,
+    /// Ends of open paths with another point nearer than half their last edge.
+    OpenEnds,
+}
+
+impl FindingKind {
+    /// The kebab-case name: `passes-over-samples`, `doubles-back`, `small-loops` or
+    /// `open-ends`.
+    pub fn name(self) -> &'static str {
+        match self {
+            FindingKind::PassesOverSamples => "passes-over-samples",
+            FindingKind::DoublesBack => "doubles-back",
+            FindingKind::SmallLoops => "small-loops",
+            FindingKind::OpenEnds => "open-ends",
+        }
+    }
+}
+
+impl std::fmt::Display for Finding {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.kind {
+            FindingKind::PassesOverSamples => write!(
+                f,
+                "{} edge(s) pass over other points (up to {:.1} point spacings into the edge's \
+                 diametral disk, at point {}; a sampled curve allows less than {DEPTH_RATIO})",
+                self.count, self.worst, self.at
+            ),
+            FindingKind::DoublesBack => write!(
+                f,
+                "the curve doubles back through far points at {} point(s) (worst a turn of \
+                 {:.0} degrees at point {})",
+                self.count, self.worst, self.at
+            ),
+            FindingKind::SmallLoops => write!(
+                f,
+                "{} loop(s) of fewer than {MIN_LOOP_POINTS} points, the smallest of {} at point {} \
+                 (a closed curve sampled within the condition has at least {MIN_LOOP_POINTS})",
+                self.count, self.worst, self.at
+            ),
+            FindingKind::OpenEnds => write!(
+                f,
+                "{} open end(s) stop next to other points (worst at point {}: its last edge is \
+                 {:.1}x the distance to its nearest point; the curve may go on there)",
+                self.count, self.at, self.worst
+            ),
+        }
+    }
+}
+
+/// The measures of one edge `ab` of a reading, for [`check_curves`] and the lab.
+#[doc(hidden)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EdgeMeasure {
+    /// `|ab| / r(a)` and `|ab| / r(b)`: how much longer the edge is than the point spacing
+    /// at each end.
+    pub ratio_at: [f64; 2],
+    /// How deep the deepest other sample reaches into the disk with diameter `ab`, over
+    /// `max(r(a), r(b))` (0 when the disk is empty).
+    pub depth: f64,
+    /// `a` and `b` (vertices of the triangulation).
+    pub ends: [u32; 2],
+}
+
+/// The distance from `v` to its nearest other vertex (its shortest Delaunay edge).
+fn nearest_distance(dt: &Triangulation, v: u32) -> f64 {
+    dt.incident(v).map(|h| dt.length(h)).fold(f64::INFINITY, f64::min)
+}
+
+/// The most steps of the walk towards an edge's midpoint ([`diametral_depth`]): a bound for
+/// adversarial results; a walk cut short gives a lower bound of the depth.
+const MAX_WALK: usize = 64;
+
+/// `|ab|/2 − d`, where `d` is the distance from the midpoint `m` of `ab` to the nearest
+/// other vertex, when that vertex lies in the disk with diameter `ab` (`0` otherwise).
+///
+/// Found by a greedy walk from an end towards `m` over Delaunay edges: a vertex that is not the
+/// nearest to `m` always has a Delaunay neighbour nearer to `m` (the segment from it to `m`
+/// leaves its Voronoi cell into a neighbour's), so the walk ends at `m`'s nearest vertex; if
+/// that is `a` (or `b`, at the same distance), the disk holds no vertex deeper than its rim.
+fn diametral_depth(dt: &Triangulation, a: u32, b: u32) -> f64 {
+    let (pa, pb) = (dt.point(a), dt.point(b));
+    let mid = [0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1])];
+    let half = 0.5 * distance(pa, pb);
+    // From the lower-numbered end, so that a walk cut short does not depend on the
+    // direction the edge is read in.
+    let start = a.min(b);
+    let (mut v, mut nearest) = (start, distance(mid, dt.point(start)));
+    for _ in 0..MAX_WALK {
+        let closer = dt
+            .incident(v)
+            .map(|h| dt.other(h, v))
+            .map(|w| (distance(mid, dt.point(w)), w))
+            .filter(|&(d, _)| d < nearest)
+            .min_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
+        match closer {
+            Some((d, w)) => (nearest, v) = (d, w),
+            None => break,
+        }
+    }
+    if v == a || v == b {
+        0.0
+    } else {
+        (half - nearest).max(0.0)
+    }
+}
+
+/// The cosine of the turn at `b` from `ab` onto `bc` (1 for a zero-length edge).
+fn turn_cos(dt: &Triangulation, a: u32, b: u32, c: u32) -> f64 {
+    let (pa, pb, pc) = (dt.point(a), dt.point(b), dt.point(c));
+    let (u, w) = ([pb[0] - pa[0], pb[1] - pa[1]], [pc[0] - pb[0], pc[1] - pb[1]]);
+    let norm = u[0].hypot(u[1]) * w[0].hypot(w[1]);
+    if norm == 0.0 {
+        1.0
+    } else {
+        ((u[0] * w[0] + u[1] * w[1]) / norm).clamp(-1.0, 1.0)
+    }
+}
+
+/// Calls `visit` with the measures of every edge of `curve` (vertices of `dt` in order;
+/// `closed`: the last joins the first), in order along it.
+#[doc(hidden)]
+pub fn measure_curve(
+    dt: &Triangulation,
+    curve: &[u32],
+    closed: bool,
+    mut visit: impl FnMut(EdgeMeasure),
+) {
+    let n = curve.len();
+    if n < 2 {
+        return;
+    }
+    let closed = closed && n >= 3;
+    let edges = if closed { n } else { n - 1 };
+    let r_first = nearest_distance(dt, curve[0]);
+    let mut r_a = r_first;
+    for k in 0..edges {
+        let (a, b) = (curve[k], curve[(k + 1) % n]);
+        let r_b = if k + 1 == n { r_first } else { nearest_distance(dt, b) };
+        let length = distance(dt.point(a), dt.point(b));
+        let depth = diametral_depth(dt, a, b) / r_a.max(r_b);
+        visit(EdgeMeasure { ratio_at: [length / r_a, length / r_b], depth, ends: [a, b] });
+        r_a = r_b;
+    }
+}
+
+/// The positions `k` in `curve` (vertices of `dt` in order; `closed`: the last joins the
+/// first) where the reading doubles back (property 2 of the module docs), each with its
+/// turn in degrees: the reading turns by more than 150° at `curve[k]` between two edges
+/// that are each at least [`LONG_EDGE_RATIO`] times the spacing at their far ends.
+pub(crate) fn doubling_back(dt: &Triangulation, curve: &[u32], closed: bool) -> Vec<(usize, f64)> {
+    let n = curve.len();
+    let closed = closed && n >= 3;
+    let inner = if closed { 0..n } else { 1..n.saturating_sub(1) };
+    let mut found = Vec::new();
+    for k in inner {
+        let (a, v, b) = (curve[(k + n - 1) % n], curve[k], curve[(k + 1) % n]);
+        let cos = turn_cos(dt, a, v, b);
+        if cos >= DOUBLING_BACK_COS {
+            continue;
+        }
+        let far = |w: u32| {
+            distance(dt.point(v), dt.point(w)) >= LONG_EDGE_RATIO * nearest_distance(dt, w)
+        };
+        if far(a) && far(b) {
+            found.push((k, cos.acos().to_degrees()));
+        }
+    }
+    found
+}
+
+/// The findings of the sampling check on `curves` (vertices of `dt` in order, each with
+/// whether it is closed); `at` in input indices.
+pub(crate) fn check_curves<'a>(
+    dt: &Triangulation,
+    curves: impl IntoIterator<Item = (&'a [u32], bool)>,
+) -> Vec<Finding> {
+    let mut over = Tally::new(FindingKind::PassesOverSamples);
+    let mut back = Tally::new(FindingKind::DoublesBack);
+    let mut small = Tally::new(FindingKind::SmallLoops);
+    let mut ends = Tally::new(FindingKind::OpenEnds);
+    // Small loops count only beside a curve of sampled size: a lone square of four points
+    // is a reading of what was given, a knot of three beside a coastline is noise.
+    let mut has_large_curve = false;
+    for (curve, closed) in curves {
+        let input = |v: u32| dt.input_index(v);
+        if !closed && curve.len() >= 2 {
+            let n = curve.len();
+            for (end, next) in [(curve[0], curve[1]), (curve[n - 1], curve[n - 2])] {
+                let last = distance(dt.point(end), dt.point(next));
+                let ratio = last / nearest_distance(dt, end);
+                if ratio > 2.0 {
+                    ends.add(ratio, input(end));
+                }
+            }
+        }
+        if closed && curve.len() < MIN_LOOP_POINTS {
+            let smallest = curve.iter().map(|&v| input(v)).min().unwrap_or(0);
+            small.add(-(curve.len() as f64), smallest);
+        }
+        has_large_curve |= curve.len() >= MIN_LOOP_POINTS;
+        for (k, degrees) in doubling_back(dt, curve, closed) {
+            back.add(degrees, input(curve[k]));
+        }
+        measure_curve(dt, curve, closed, |m| {
+            if m.depth >= DEPTH_RATIO {
+                over.add(m.depth, input(m.ends[0]).min(input(m.ends[1])));
+            }
+        });
+    }
+    if !has_large_curve {
+        small.count = 0;
+    }
+    [over, back, small, ends].into_iter().filter(|t| t.count > 0).map(|t| t.finding()).collect()
+}
+
+/// The findings of the sampling check on `rec`, a result on `dt`'s points (input indices);
+/// none for results whose vertices are not the input points, or without triangles.
+pub(crate) fn diagnose(dt: &Triangulation, rec: &super::Reconstruction) -> Vec<Finding> {
+    if rec.vertices != super::Vertices::Input || dt.shape() != crate::delaunay::Shape::Proper {
+        return Vec::new();
+    }
+    let vertex_of = dt.vertex_of_inputs();
+    let as_vertices =
+        |curve: &Vec<usize>| -> Vec<u32> { curve.iter().map(|&i| vertex_of[i]).collect() };
+    let loops = rec.loops.iter().map(|l| (as_vertices(l), true));
+    let curves: Vec<(Vec<u32>, bool)> =
+        loops.chain(rec.paths.iter().map(|p| (as_vertices(p), false))).collect();
+    check_curves(dt, curves.iter().map(|(c, closed)| (c.as_slice(), *closed)))
+}
+
+/// Counts one kind of finding and keeps its worst value, at the smallest input index among
+/// equal worst values (so that the finding does not depend on where a loop starts).
+struct Tally {
+    kind: FindingKind,
+    count: usize,
+    worst: f64,
+    at: usize,
+}
+
+impl Tally {
+    fn new(kind: FindingKind) -> Tally {
+        Tally { kind, count: 0, worst: f64::NEG_INFINITY, at: usize::MAX }
+    }
+
+    fn add(&mut self, value: f64, at: usize) {
+        self.count += 1;
+        if value > self.worst || (value == self.worst && at < self.at) {
+            (self.worst, self.at) = (value, at);
+        }
+    }
+
+    fn finding(&self) -> Finding {
+        // Small loops keep the negated size, so that the smallest is the worst.
+        let worst = if self.kind == FindingKind::SmallLoops { -self.worst } else { self.worst };
+        Finding { kind: self.kind, count: self.count, worst, at: self.at }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::Point;
+    use crate::result::{diagnose, Reconstruction};
+    use std::f64::consts::TAU;
+
+    fn circle(n: usize) -> Vec<Point> {
+        (0..n).map(|i| TAU * i as f64 / n as f64).map(|a| [a.cos(), a.sin()]).collect()
+    }
+
+    /// The findings of the loops `loops` (input indices) on `points`.
+    fn findings(points: &[Point], loops: Vec<Vec<usize>>) -> Vec<Finding> {
+        let dt = Triangulation::new(points).unwrap();
+        diagnose(&dt, &Reconstruction { loops, ..Reconstruction::default() })
+    }
+
+    fn kinds(found: &[Finding]) -> Vec<FindingKind> {
+        found.iter().map(|f| f.kind).collect()
+    }
+
+    #[test]
+    fn a_sampled_circle_has_no_findings() {
+        let points = circle(60);
+        assert!(findings(&points, vec![(0..60).collect()]).is_empty());
+        let rec = crate::reconstruct(&points, &crate::Options::default()).unwrap();
+        assert!(rec.diagnosis.is_empty() && !rec.warns());
+    }
+
+    #[test]
+    fn dense_corners_and_long_sides_are_a_sampled_curve() {
+        // A square whose sides have only their end samples and samples close to the
+        // corners: every side is many times the spacing at its ends (u far above 2), but
+        // its diametral disk is empty.
+        let mut points = Vec::new();
+        for [x, y, dx, dy] in [
+            [0.0, 0.0, 1.0, 0.0],
+            [10.0, 0.0, 0.0, 1.0],
+            [10.0, 10.0, -1.0, 0.0],
+            [0.0, 10.0, 0.0, -1.0],
+        ] {
+            points.push([x, y]);
+            points.push([x + 0.3 * dx, y + 0.3 * dy]);
+        }
+        // Corner, then the sample beside it, then the long side to the next corner's
+        // neighbour... read in order around the square.
+        let order = vec![0, 1, 7, 6, 5, 4, 3, 2];
+        let order: Vec<usize> = order.into_iter().rev().collect();
+        let found = findings(&points, vec![order]);
+        assert!(found.iter().all(|f| f.kind != FindingKind::PassesOverSamples), "{found:?}");
+    }
+
+    #[test]
+    fn a_chord_across_the_curve_passes_over_samples() {
+        // 40 samples of a circle read without the 11 samples between 0 and 12: the chord
+        // 0–12 passes 2.5 spacings deep over them (half-chord 0.81, sagitta 0.41, spacing
+        // 0.157 of the radius).
+        let points = circle(40);
+        let order: Vec<usize> = (12..40).chain([0]).collect();
+        let found = findings(&points, vec![order]);
+        assert_eq!(kinds(&found), vec![FindingKind::PassesOverSamples], "{found:?}");
+        assert_eq!(found[0].count, 1);
+        assert!(found[0].worst >= DEPTH_RATIO && found[0].worst < 3.0, "{found:?}");
+        assert!([0, 12].contains(&found[0].at));
+        // Half as many skipped samples stay within twice the spacing: no finding.
+        let order: Vec<usize> = (5..40).chain([0]).collect();
+        assert!(findings(&points, vec![order]).is_empty());
+    }
+
+    #[test]
+    fn an_outlier_wired_into_the_curve_doubles_back() {
+        let mut points = circle(60);
+        points.push([3.0, 0.05]);
+        let mut order: Vec<usize> = (0..60).collect();
+        order.insert(1, 60);
+        let found = findings(&points, vec![order]);
+        assert!(kinds(&found).contains(&FindingKind::DoublesBack), "{found:?}");
+        let back = found.iter().find(|f| f.kind == FindingKind::DoublesBack).unwrap();
+        assert_eq!((back.count, back.at), (1, 60));
+        assert!(back.worst > 150.0);
+    }
+
+    /// `n` points on a small circle far from a circle of 40, read as the two loops.
+    fn knot_beside_a_circle(n: usize) -> Vec<Finding> {
+        let mut points = circle(40);
+        points.extend(circle(n).iter().map(|p| [5.0 + 0.1 * p[0], 0.1 * p[1]]));
+        findings(&points, vec![(0..40).collect(), (40..40 + n).collect()])
+    }
+
+    #[test]
+    fn loops_of_fewer_than_seven_points_beside_a_curve_are_small() {
+        for n in [3, 4, 6] {
+            let found = knot_beside_a_circle(n);
+            assert_eq!(kinds(&found), vec![FindingKind::SmallLoops], "{n} points");
+            assert_eq!((found[0].worst, found[0].at), (n as f64, 40));
+            // Alone, they are what was given.
+            assert!(findings(&circle(n), vec![(0..n).collect()]).is_empty(), "{n} alone");
+        }
+        assert!(knot_beside_a_circle(7).is_empty());
+    }
+
+    #[test]
+    fn an_open_end_next_to_other_points() {
+        // 40 samples of a circle read as one path that stops at sample 30, while 31 to 39
+        // are read as their own loop beside it: sample 30's nearest point is 31, at one
+        // spacing; its last edge is one spacing too, so that end is fine. Read as a path
+        // with its last edge across to 35 instead, the end 35... keeps 34 and 36 at one
+        // spacing against a last edge of five: an open end next to other points.
+        let points = circle(40);
+        let path: Vec<usize> = (0..=30).chain([35]).collect();
+        let found = {
+            let dt = Triangulation::new(&points).unwrap();
+            let rec = Reconstruction { paths: vec![path], ..Reconstruction::default() };
+            diagnose(&dt, &rec)
+        };
+        let end = found.iter().find(|f| f.kind == FindingKind::OpenEnds).expect("open end");
+        assert_eq!((end.count, end.at), (1, 35));
+        assert!(end.worst > 4.0 && end.worst < 5.0, "{end:?}");
+    }
+
+    #[test]
+    fn the_message_says_where_and_how_much() {
+        let found = knot_beside_a_circle(5);
+        let text = found[0].to_string();
+        assert!(text.contains("fewer than 7 points") && text.contains("at point 40"), "{text}");
+    }
+}
