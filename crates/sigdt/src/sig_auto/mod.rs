@@ -131,11 +131,19 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     }
     match coarse_reading::coarse_reading(dt, steps) {
         Some(fine) => {
-            let pairs = fine
+            let pairs: Vec<[u32; 2]> = fine
                 .loops
                 .iter()
-                .flat_map(|l| (0..l.len()).map(move |k| [l[k], l[(k + 1) % l.len()]]));
-            finish(dt, pairs.collect(), Vec::new(), &fine.outliers, rec.stats)
+                .flat_map(|l| (0..l.len()).map(move |k| [l[k], l[(k + 1) % l.len()]]))
+                .collect();
+            // Threaded through noisy points, the loops zigzag where the noise does: the
+            // status says so (step 10's test), so that a noisy outline is never silent.
+            let zigzags = Reading::new(dt, &pairs).zigzags(MAX_SAMPLED_TURN.cos());
+            let mut fine_rec = finish(dt, pairs, Vec::new(), &fine.outliers, rec.stats);
+            if zigzags && fine_rec.status.is_manifold() {
+                fine_rec.status = Status::Noisy;
+            }
+            fine_rec
         }
         None => rec,
     }
