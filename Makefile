@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold wheel wheel-test man api-docs
+.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-outlines wheel wheel-test man api-docs
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -149,7 +149,9 @@ bench-python: py-build build
 ## report: the side-by-side evaluation in docs/report/ (issue 4): every method and
 ## shapely.concave_hull on data/curves (or DATA=...) and on the real shapes of data/real
 ## (docs/report/real/) and on the non-manifold drawings of data/non-manifold
-## (docs/report/non-manifold/), then the noise, outlier, lfs-noise and eps sweeps, then the
+## (docs/report/non-manifold/), and as a user would judge them on data/outlines
+## (docs/report/outlines/: IoU, topology, silent wrong), then the noise, outlier, lfs-noise
+## and eps sweeps, then the
 ## galleries (docs/report/gallery/; with another DATA, set TABLE1_CASES and NOISE_CASE to its
 ## cases). Takes about ten minutes on 2 cores.
 DATA ?= data/curves
@@ -173,6 +175,7 @@ report: build py-build
 	$(VPY) -m sigdt.baselines $(NON_MANIFOLD) $(TARGET_DIR)/concave-hull-non-manifold
 	$(SIGDT) bench $(NON_MANIFOLD) --out $(REPORT)/non-manifold \
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-non-manifold
+	$(VPY) python/bench/outline_scores.py data/outlines $(REPORT)/outlines
 	$(SIGDT) sweep noise $(DATA) --out $(SWEEPS)/noise --jobs 2
 	$(SIGDT) sweep outliers $(DATA) --out $(SWEEPS)/outliers --jobs 2
 	$(SIGDT) sweep lfs-noise data/svg/simple.svg --out $(SWEEPS)/lfs-noise --jobs 2
@@ -192,11 +195,21 @@ report: build py-build
 	  --out $(REPORT)/real/gallery
 	$(SIGDT) gallery $(NON_MANIFOLD) --cases $(NON_MANIFOLD_CASES) --out $(REPORT)/non-manifold/gallery
 
+## data-outlines: regenerates data/outlines, real outlines resampled clean, noisy and with
+## outliers (a test checks the folder against the generator).
+data-outlines: py-build
+	$(VPY) python/bench/outline_data.py data/outlines
+
 ## data-non-manifold: regenerates data/non-manifold, the seeded non-manifold drawings (a
 ## test checks the folder against the generator).
 data-non-manifold:
 	cargo run --release -p sigdt-lab --example non_manifold_data -- $(NON_MANIFOLD)
 
+## Issue 29's pictures in docs/sig-auto.md: real outlines clean, noisy and with outliers,
+## a win and a failure each (SIG-CONNECT2D and SIG-AUTO).
+OUTLINE_PICTURES := mp7_fork8_lfs030_clean mp7_spring11_lfs030_clean \
+  pysal_us48_r1_k1_noise025 mp7_horseshoe10_lfs030_noise025 \
+  gshhs_island247_smooth_outliers mp7_spring18_uni050_outliers
 REAL_WINS := mp7_octopus16_lfs030_out03 pysal_10740_r167_k1 mp7_Bone20_lfs030_noise0.002 \
   mp7_spring11_lfs030
 REAL_FAILURES := wdb_river6649_k1 gshhs_island81_k1 pysal_chicago77_r37_k1 \
@@ -231,6 +244,13 @@ pictures: build py-build
 	for c in $(REAL_WINS); do \
 	  $(SIGDT) render $(REAL)/$$c.xy --gt $(REAL)/$$c.gt --method sig-connect2d --width 420 \
 	    -o docs/images/sig-auto/real/$$c.sig-connect2d.svg; \
+	done
+	mkdir -p docs/images/sig-auto/outlines
+	for c in $(OUTLINE_PICTURES); do \
+	  for m in sig-connect2d sig-auto; do \
+	    $(SIGDT) render data/outlines/$$c.xy --gt data/outlines/$$c.gt --method $$m --width 420 \
+	      -o docs/images/sig-auto/outlines/$$c.$$m.svg; \
+	  done; \
 	done
 
 clean:

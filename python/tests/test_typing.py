@@ -38,6 +38,13 @@ dups: npt.NDArray[np.int64] = rec.duplicates
 stats: dict[str, int] = rec.stats
 manifold: bool = rec.is_manifold
 polys: list[tuple[int, list[int]]] = rec.polygons
+warns: bool = rec.warns
+findings = rec.diagnosis
+if findings:
+    worst: float = findings[0]["worst"]
+    at: int = findings[0]["at"]
+    finding_kind: str = findings[0]["kind"]
+    message: str = findings[0]["message"]
 geometry = rec.to_shapely()
 area: float = geometry.area
 feature = rec.to_geojson()

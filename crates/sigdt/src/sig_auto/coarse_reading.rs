@@ -18,7 +18,9 @@
 //!    nearest coarse loop vertices), at the parameter of its foot on that edge; each edge's
 //!    points follow in that order (ties by index). A point farther than `f · s` from every
 //!    candidate edge is left out as an outlier: it is farther from the curve than the
-//!    coarse spacing, which no noisy sample of it is.
+//!    coarse spacing, which no noisy sample of it is. Two such points within the coarse
+//!    spacing of each other are a piece of curve the level missed, not outliers: the level
+//!    is rejected.
 //! 4. Where the fine loops cross themselves (noise across an edge), 2-opt moves undo the
 //!    crossings; each shortens the loop, so this ends. A loop that still crosses, or meets
 //!    another loop, or a fine reading that fails the sampling check, rejects the level.
@@ -148,6 +150,9 @@ fn refine(dt: &Triangulation, loops: &[Vec<u32>], radius: f64) -> Option<FineRea
             _ => outliers.push(v),
         }
     }
+    if !isolated(dt, &outliers, radius) {
+        return None;
+    }
     let mut fine = Vec::with_capacity(loops.len());
     for (l, lp) in loops.iter().enumerate() {
         let mut seq = Vec::new();
@@ -167,6 +172,28 @@ fn refine(dt: &Triangulation, loops: &[Vec<u32>], radius: f64) -> Option<FineRea
         return None;
     }
     Some(FineReading { loops: fine, outliers })
+}
+
+/// Whether no two of `points` are within `radius` of each other: outliers lie apart, and
+/// points the coarse curves pass by in a group are a curve of their own (SIG-AUTO's "own
+/// curves" rule) that this level failed to read.
+fn isolated(dt: &Triangulation, points: &[u32], radius: f64) -> bool {
+    let cell = |p: Point| ((p[0] / radius).floor() as i64, (p[1] / radius).floor() as i64);
+    let mut grid: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
+    for &v in points {
+        let p = dt.point(v);
+        let (cx, cy) = cell(p);
+        let near = (cx - 1..=cx + 1)
+            .flat_map(|x| (cy - 1..=cy + 1).map(move |y| (x, y)))
+            .filter_map(|key| grid.get(&key))
+            .flatten()
+            .any(|&w| distance(p, dt.point(w)) <= radius);
+        if near {
+            return false;
+        }
+        grid.entry((cx, cy)).or_default().push(v);
+    }
+    true
 }
 
 /// The distance from `p` to segment `ab` and the parameter of its foot, in `[0, 1]`.
