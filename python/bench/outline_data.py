@@ -122,7 +122,9 @@ def number(x: float) -> str:
     return repr(float(x))
 
 
-def write_case(out: Path, name: str, points: np.ndarray, rings: list[int], order: np.ndarray) -> None:
+def write_case(
+    out: Path, name: str, points: np.ndarray, rings: list[int], order: np.ndarray
+) -> None:
     """``NAME.xy`` in the seeded ``order`` and ``NAME.gt``: each ring's consecutive samples."""
     position = np.empty(len(order), dtype=np.int64)
     position[order] = np.arange(len(order))
@@ -218,13 +220,37 @@ def main(argv: list[str]) -> int:
                     (out / f"{name}.{suffix}").write_text(text)
             noise = f"{sigma:g}" if sigma else "0"
             index.append(
-                [name, f"outline-{variant}", len(points), len(rings), 1, "", noise, n_out,
-                 f"{spacing:.6g}", n_holes, f"real:{base}"]
+                [
+                    name,
+                    f"outline-{variant}",
+                    len(points),
+                    len(rings),
+                    1,
+                    "",
+                    noise,
+                    n_out,
+                    f"{spacing:.6g}",
+                    n_holes,
+                    f"real:{base}",
+                ]
             )
     with open(out / "index.csv", "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
-        writer.writerow(["name", "category", "n_points", "n_components", "closed", "epsilon",
-                         "noise", "outliers", "spacing", "holes", "source"])
+        writer.writerow(
+            [
+                "name",
+                "category",
+                "n_points",
+                "n_components",
+                "closed",
+                "epsilon",
+                "noise",
+                "outliers",
+                "spacing",
+                "holes",
+                "source",
+            ]
+        )
         writer.writerows(index)
     counts = {"kept": len(chosen), "usable": len(kept), "dropped": dropped}
     (out / "counts.json").write_text(json.dumps(counts, indent=1, sort_keys=True) + "\n")

@@ -30,9 +30,8 @@ from typing import Any
 
 import numpy as np
 import shapely
-from shapely.geometry import MultiLineString, Polygon
-
 import sigdt
+from shapely.geometry import MultiLineString, Polygon
 
 CONCAVE_HULL_RATIO = 0.05
 GOOD_IOU = 0.95
@@ -128,9 +127,14 @@ def run_sigdt(method: str, cases: list[dict[str, Any]]) -> list[dict[str, Any]]:
         row = score(rings, edges, case)
         found = {(int(a), int(b)) for a, b in rec.edges}
         listed = {int(i) for i, why in zip(rec.left_out, rec.left_out_reasons) if why == "outlier"}
-        row.update(warned=bool(rec.warns), status=rec.status, seconds=seconds,
-                   exact=found == case["gt"], listed=len(listed & case["outliers"]),
-                   curve_listed=len(listed - case["outliers"]))
+        row.update(
+            warned=bool(rec.warns),
+            status=rec.status,
+            seconds=seconds,
+            exact=found == case["gt"],
+            listed=len(listed & case["outliers"]),
+            curve_listed=len(listed - case["outliers"]),
+        )
         out.append(row)
     return out
 
@@ -145,8 +149,9 @@ def run_concave_hull(cases: list[dict[str, Any]]) -> list[dict[str, Any]]:
         rings = [np.asarray(r.coords)[:-1] for p in parts for r in [p.exterior, *p.interiors]]
         edges = [np.asarray(r.coords) for p in parts for r in [p.exterior, *p.interiors]]
         row = score(rings, edges, case)
-        row.update(warned=False, status="hull", seconds=seconds, exact=False, listed=0,
-                   curve_listed=0)
+        row.update(
+            warned=False, status="hull", seconds=seconds, exact=False, listed=0, curve_listed=0
+        )
         out.append(row)
     return out
 
@@ -160,18 +165,24 @@ def report(results: dict[str, list[dict[str, Any]]], cases: list[dict[str, Any]]
     lines = [
         "# Outlines as a user would judge them",
         "",
-        "`python/bench/outline_scores.py` on `data/outlines` (real outlines of `data/real`, "
-        "resampled at spacing s with +-0.3 s jitter along them: clean, Gaussian noise of "
-        "0.1 s and 0.25 s, and 1-3 % outliers farther than 2 s from the outline; "
-        f"{len(cases)} cases). Per method and category:",
+        (
+            "`python/bench/outline_scores.py` on `data/outlines` (real outlines of `data/real`, "
+            "resampled at spacing s with +-0.3 s jitter along them: clean, Gaussian noise of "
+            "0.1 s and 0.25 s, and 1-3 % outliers farther than 2 s from the outline; "
+            f"{len(cases)} cases). Per method and category:"
+        ),
         "",
         "- **good**: topology right (as many polygons and holes as the truth) and IoU >= 0.95;",
-        "- **silent wrong**: not good, and the result did not warn (`rec.warns`: a warning "
-        "status or a finding of the sampling check, `docs/sampling-check.md`); "
-        "`concave-hull` never warns;",
+        (
+            "- **silent wrong**: not good, and the result did not warn (`rec.warns`: a warning "
+            "status or a finding of the sampling check, `docs/sampling-check.md`); "
+            "`concave-hull` never warns;"
+        ),
         "- **warned, good**: warnings on good results (false alarms on clean cases);",
-        "- **IoU**, **H/s**: medians of IoU and of the Hausdorff distance to the true outline "
-        "over the spacing.",
+        (
+            "- **IoU**, **H/s**: medians of IoU and of the Hausdorff distance to the true outline "
+            "over the spacing."
+        ),
         "",
     ]
     for metric in ("good", "silent wrong", "warned, good", "IoU", "H/s"):
@@ -188,8 +199,9 @@ def report(results: dict[str, list[dict[str, Any]]], cases: list[dict[str, Any]]
                     silent = sum(1 for r, g in zip(sel, good) if not g and not r["warned"])
                     cells.append(percent(silent, len(sel)))
                 elif metric == "warned, good":
-                    cells.append(percent(sum(1 for r, g in zip(sel, good) if g and r["warned"]),
-                                         sum(good)))
+                    cells.append(
+                        percent(sum(1 for r, g in zip(sel, good) if g and r["warned"]), sum(good))
+                    )
                 elif metric == "IoU":
                     cells.append(f"{statistics.median(r['iou'] for r in sel):.3f}")
                 else:
@@ -199,8 +211,10 @@ def report(results: dict[str, list[dict[str, Any]]], cases: list[dict[str, Any]]
     lines += [
         "## Warned while good: exact?",
         "",
-        "A result can be good by IoU and topology and still have wrong edges; the sampling "
-        "check warns about those. Warned good results, and how many of them are exact:",
+        (
+            "A result can be good by IoU and topology and still have wrong edges; the sampling "
+            "check warns about those. Warned good results, and how many of them are exact:"
+        ),
         "",
     ]
     for method, rows in results.items():
@@ -214,8 +228,10 @@ def report(results: dict[str, list[dict[str, Any]]], cases: list[dict[str, Any]]
         "",
         "## Outliers listed",
         "",
-        f"Of the {total} outliers of the {len(outlier_cases)} outlier cases: how many each "
-        "method lists as `outlier`, and how many curve samples it lists as outliers.",
+        (
+            f"Of the {total} outliers of the {len(outlier_cases)} outlier cases: how many each "
+            "method lists as `outlier`, and how many curve samples it lists as outliers."
+        ),
         "",
         "| method | outliers listed | % | curve samples listed |",
         "|---|--:|--:|--:|",
@@ -233,7 +249,9 @@ def report(results: dict[str, list[dict[str, Any]]], cases: list[dict[str, Any]]
             if not (r["topology"] and r["iou"] >= GOOD_IOU) and not r["warned"]
         ]
         if silent:
-            shown = ", ".join(silent[:LISTED]) + (f", and {len(silent) - LISTED} more" if len(silent) > LISTED else "")
+            shown = ", ".join(silent[:LISTED]) + (
+                f", and {len(silent) - LISTED} more" if len(silent) > LISTED else ""
+            )
             lines.append(f"- **{method}** ({len(silent)}): {shown}")
     return "\n".join(lines) + "\n"
 
@@ -255,13 +273,34 @@ def main(argv: list[str]) -> int:
     (out / "report.md").write_text(report(results, cases))
     with open(out / "results.csv", "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
-        writer.writerow(["method", "name", "category", "iou", "topology_right", "hausdorff_over_s",
-                         "warned", "status", "seconds"])
+        writer.writerow(
+            [
+                "method",
+                "name",
+                "category",
+                "iou",
+                "topology_right",
+                "hausdorff_over_s",
+                "warned",
+                "status",
+                "seconds",
+            ]
+        )
         for method, rows in results.items():
             for r, c in zip(rows, cases):
-                writer.writerow([method, c["name"], c["category"], f"{r['iou']:.4f}",
-                                 int(r["topology"]), f"{r['hausdorff']:.3f}", int(r["warned"]),
-                                 r["status"], f"{r['seconds']:.4f}"])
+                writer.writerow(
+                    [
+                        method,
+                        c["name"],
+                        c["category"],
+                        f"{r['iou']:.4f}",
+                        int(r["topology"]),
+                        f"{r['hausdorff']:.3f}",
+                        int(r["warned"]),
+                        r["status"],
+                        f"{r['seconds']:.4f}",
+                    ]
+                )
     print(f"wrote {out / 'report.md'} and {out / 'results.csv'}", file=sys.stderr)
     return 0
 

@@ -24,13 +24,15 @@ def test_the_folder_is_what_the_generator_writes(tmp_path):
     folder = ROOT / "data" / "outlines"
     written = sorted(p.name for p in tmp_path.iterdir())
     assert written == sorted(p.name for p in folder.iterdir() if p.name != "README.md")
-    match, mismatch, errors = filecmp.cmpfiles(tmp_path, folder, written, shallow=False)
+    _match, mismatch, errors = filecmp.cmpfiles(tmp_path, folder, written, shallow=False)
     assert not mismatch and not errors, f"differ: {mismatch[:5]} (run make data-outlines)"
 
 
 def test_the_scorer_judges_a_clean_outline_good(tmp_path):
     scores = load("outline_scores")
-    cases = [c for c in scores.read_folder(ROOT / "data" / "outlines") if c["name"].endswith("_clean")]
+    cases = [
+        c for c in scores.read_folder(ROOT / "data" / "outlines") if c["name"].endswith("_clean")
+    ]
     circle = next(c for c in cases if c["name"].startswith("mp7_HCircle"))
     [row] = scores.run_sigdt("sig-auto", [circle])
     assert row["topology"] and row["iou"] > 0.99 and not row["warned"]
