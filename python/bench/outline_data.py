@@ -38,10 +38,8 @@ MIN_IOU = 0.97
 MAX_OUTLINES = 120
 
 
-def read_rings(name: str) -> tuple[list[np.ndarray], float]:
-    """The closed rings of a case's ground truth, and its median edge length."""
-    points = np.loadtxt(SOURCE / f"{name}.xy", ndmin=2)
-    edges = np.loadtxt(SOURCE / f"{name}.gt", dtype=np.int64, ndmin=2)
+def rings_of(points: np.ndarray, edges: np.ndarray) -> list[np.ndarray]:
+    """The closed rings of an edge set in which every vertex has two edges, in order."""
     neighbours: dict[int, list[int]] = {}
     for a, b in edges:
         neighbours.setdefault(int(a), []).append(int(b))
@@ -55,20 +53,30 @@ def read_rings(name: str) -> tuple[list[np.ndarray], float]:
         seen.add(start)
         while True:
             following = [v for v in neighbours[current] if v != previous]
-            if not following or following[0] == start or following[0] in seen:
+            if not following or following[0] in seen:
                 break
             previous, current = current, following[0]
             ring.append(current)
             seen.add(current)
         rings.append(points[ring])
+    return rings
+
+
+def read_rings(name: str) -> tuple[list[np.ndarray], float]:
+    """The closed rings of a case's ground truth, and its median edge length."""
+    points = np.loadtxt(SOURCE / f"{name}.xy", ndmin=2)
+    edges = np.loadtxt(SOURCE / f"{name}.gt", dtype=np.int64, ndmin=2)
     spacing = float(np.median(np.hypot(*(points[edges[:, 0]] - points[edges[:, 1]]).T)))
-    return rings, spacing
+    return rings_of(points, edges), spacing
 
 
 def region(rings: list[np.ndarray]) -> shapely.Geometry:
-    """The even-odd region of closed rings (nested rings are holes)."""
+    """The even-odd region of closed rings (nested rings are holes); ``None`` for no ring of
+    three or more points."""
     result = None
     for ring in rings:
+        if len(ring) < 3:
+            continue
         polygon = Polygon(ring).buffer(0)
         result = polygon if result is None else result.symmetric_difference(polygon)
     return result

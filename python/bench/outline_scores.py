@@ -31,7 +31,8 @@ from typing import Any
 import numpy as np
 import shapely
 import sigdt
-from shapely.geometry import MultiLineString, Polygon
+from outline_data import region, rings_of
+from shapely.geometry import MultiLineString
 
 CONCAVE_HULL_RATIO = 0.05
 GOOD_IOU = 0.95
@@ -52,41 +53,6 @@ def read_folder(folder: Path) -> list[dict[str, Any]]:
         row["gt"] = {(int(a), int(b)) for a, b in gt}
         row["outliers"] = set(range(len(row["points"]))) - {int(v) for v in gt.ravel()}
     return rows
-
-
-def rings_of(points: np.ndarray, edges: np.ndarray) -> list[np.ndarray]:
-    """The closed rings of an edge set whose vertices all have two edges."""
-    neighbours: dict[int, list[int]] = {}
-    for a, b in edges:
-        neighbours.setdefault(int(a), []).append(int(b))
-        neighbours.setdefault(int(b), []).append(int(a))
-    seen: set[int] = set()
-    rings = []
-    for start in sorted(neighbours):
-        if start in seen:
-            continue
-        ring, previous, current = [start], -1, start
-        seen.add(start)
-        while True:
-            following = [v for v in neighbours[current] if v != previous]
-            if not following or following[0] in seen:
-                break
-            previous, current = current, following[0]
-            ring.append(current)
-            seen.add(current)
-        rings.append(points[ring])
-    return rings
-
-
-def region(rings: list[np.ndarray]) -> Any:
-    """The even-odd region of rings; ``None`` for no ring of three or more points."""
-    result = None
-    for ring in rings:
-        if len(ring) < 3:
-            continue
-        polygon = Polygon(ring).buffer(0)
-        result = polygon if result is None else result.symmetric_difference(polygon)
-    return result
 
 
 def topology(geometry: Any) -> tuple[int, int]:

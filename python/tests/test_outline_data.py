@@ -12,6 +12,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def load(name: str):
+    # The scorer imports the generator as a sibling module, as it does when run as a script.
+    if str(ROOT / "python" / "bench") not in sys.path:
+        sys.path.insert(0, str(ROOT / "python" / "bench"))
     spec = importlib.util.spec_from_file_location(name, ROOT / "python" / "bench" / f"{name}.py")
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module

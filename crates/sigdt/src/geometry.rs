@@ -39,6 +39,12 @@ pub fn orient2d(p: Point, q: Point, r: Point) -> f64 {
 
 /// Distance from `q` to the closed segment `ab` (to `a` when the segment is a point).
 pub fn segment_distance(q: Point, a: Point, b: Point) -> f64 {
+    segment_foot(q, a, b).0
+}
+
+/// Distance from `q` to the closed segment `ab`, and the parameter in `[0, 1]` of the
+/// nearest point of the segment (`0` when the segment is a point).
+pub fn segment_foot(q: Point, a: Point, b: Point) -> (f64, f64) {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let len2 = dx * dx + dy * dy;
     let t = if len2 > 0.0 {
@@ -47,7 +53,7 @@ pub fn segment_distance(q: Point, a: Point, b: Point) -> f64 {
         0.0
     };
     let foot = [a[0] + t * dx, a[1] + t * dy];
-    (q[0] - foot[0]).hypot(q[1] - foot[1])
+    ((q[0] - foot[0]).hypot(q[1] - foot[1]), t)
 }
 
 /// Distance from `q` to the ray that starts at `from` and goes on in the direction

@@ -38,7 +38,7 @@ use std::collections::HashMap;
 
 use super::{sig_auto_with, Steps};
 use crate::delaunay::Triangulation;
-use crate::geometry::{distance, orient2d, segments_cross, Point};
+use crate::geometry::{distance, orient2d, segment_foot, segments_cross, Point};
 use crate::proximity::kdtree::KdTree;
 use crate::proximity::nearest::nearest_vertex_distances;
 use crate::result::{check_curves, Status};
@@ -94,21 +94,47 @@ pub(super) fn coarse_reading(dt: &Triangulation, steps: &Steps) -> Option<FineRe
     None
 }
 
+/// Points bucketed in square cells of side `radius`, to ask whether a new point has one
+/// within `radius`.
+struct Cells<'a> {
+    dt: &'a Triangulation,
+    radius: f64,
+    cells: HashMap<(i64, i64), Vec<u32>>,
+}
+
+impl<'a> Cells<'a> {
+    fn new(dt: &'a Triangulation, radius: f64) -> Self {
+        Cells { dt, radius, cells: HashMap::new() }
+    }
+
+    fn cell(&self, p: Point) -> (i64, i64) {
+        ((p[0] / self.radius).floor() as i64, (p[1] / self.radius).floor() as i64)
+    }
+
+    /// Whether a point already added lies within `radius` of `v`.
+    fn has_near(&self, v: u32) -> bool {
+        let p = self.dt.point(v);
+        let (cx, cy) = self.cell(p);
+        (cx - 1..=cx + 1)
+            .flat_map(|x| (cy - 1..=cy + 1).map(move |y| (x, y)))
+            .filter_map(|key| self.cells.get(&key))
+            .flatten()
+            .any(|&w| distance(p, self.dt.point(w)) < self.radius)
+    }
+
+    fn add(&mut self, v: u32) {
+        let key = self.cell(self.dt.point(v));
+        self.cells.entry(key).or_default().push(v);
+    }
+}
+
 /// Vertices of `dt` at least `radius` apart, chosen greedily in vertex order.
 fn thin(dt: &Triangulation, radius: f64) -> Vec<u32> {
-    let cell = |p: Point| ((p[0] / radius).floor() as i64, (p[1] / radius).floor() as i64);
-    let mut grid: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
+    let mut cells = Cells::new(dt, radius);
     let mut kept = Vec::new();
     for v in 0..dt.num_vertices() as u32 {
-        let p = dt.point(v);
-        let (cx, cy) = cell(p);
-        let near = (cx - 1..=cx + 1)
-            .flat_map(|x| (cy - 1..=cy + 1).map(move |y| (x, y)))
-            .filter_map(|key| grid.get(&key))
-            .flatten()
-            .any(|&w| distance(p, dt.point(w)) < radius);
-        if !near {
-            grid.entry((cx, cy)).or_default().push(v);
+        if !cells.has_near(v) {
+            cells.add(v);
             kept.push(v);
         }
     }
@@ -139,7 +165,7 @@ fn refine(dt: &Triangulation, loops: &[Vec<u32>], radius: f64) -> Option<FineRea
             let n = loops[l].len();
             for edge in [(l, k), (l, (k + n - 1) % n)] {
                 let (a, b) = (dt.point(loops[l][edge.1]), dt.point(loops[l][(edge.1 + 1) % n]));
-                let (d, t) = foot(p, a, b);
+                let (d, t) = segment_foot(p, a, b);
                 if best.map_or(true, |(bd, be, _)| (d, edge) < (bd, be)) {
                     best = Some((d, edge, t));
                 }
@@ -174,38 +200,18 @@ fn refine(dt: &Triangulation, loops: &[Vec<u32>], radius: f64) -> Option<FineRea
     Some(FineReading { loops: fine, outliers })
 }
 
-/// Whether no two of `points` are within `radius` of each other: outliers lie apart, and
+/// Whether no two of `points` are closer than `radius` to each other: outliers lie apart, and
 /// points the coarse curves pass by in a group are a curve of their own (SIG-AUTO's "own
 /// curves" rule) that this level failed to read.
 fn isolated(dt: &Triangulation, points: &[u32], radius: f64) -> bool {
-    let cell = |p: Point| ((p[0] / radius).floor() as i64, (p[1] / radius).floor() as i64);
-    let mut grid: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
+    let mut cells = Cells::new(dt, radius);
     for &v in points {
-        let p = dt.point(v);
-        let (cx, cy) = cell(p);
-        let near = (cx - 1..=cx + 1)
-            .flat_map(|x| (cy - 1..=cy + 1).map(move |y| (x, y)))
-            .filter_map(|key| grid.get(&key))
-            .flatten()
-            .any(|&w| distance(p, dt.point(w)) <= radius);
-        if near {
+        if cells.has_near(v) {
             return false;
         }
-        grid.entry((cx, cy)).or_default().push(v);
+        cells.add(v);
     }
     true
-}
-
-/// The distance from `p` to segment `ab` and the parameter of its foot, in `[0, 1]`.
-fn foot(p: Point, a: Point, b: Point) -> (f64, f64) {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (distance(p, [a[0] + t * dx, a[1] + t * dy]), t)
 }
 
 /// Whether non-adjacent segments `ab` and `cd` cross or touch (an end on the other
