@@ -37,6 +37,13 @@
 //!    every edge of the open paths and is both shorter and turns less (paths counted as
 //!    closed by their chords).
 //!
+//! 7. **The sampling check** ([`diagnosis`](Reconstruction::diagnosis),
+//!    `docs/sampling-check.md`) reads the result back. Where it doubles back through a far
+//!    point, that point is left out as an outlier (`wired_outliers`). If it still finds
+//!    something, or sculpting got stuck, the points are thinned to 2, 3 and 4 times their
+//!    spacing, read again, and every point threaded along the first coarse reading that
+//!    passes the check (`coarse_reading`): noise of up to a quarter of the spacing.
+//!
 //! Points left out are listed in the result with the reason `outlier`; a result whose
 //! loops pass through every point that is not left out is a `polygon` or `polygons`.
 //!
@@ -110,10 +117,11 @@ pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
 /// user parameter: it exists so that each step can be measured
 /// (`sigdt-lab/examples/sig_auto_ablation.rs`, `sigdt-lab/examples/join_ratio_sweep.rs`).
 ///
-/// The result carries the sampling check's findings ([`Reconstruction::diagnosis`]). When
-/// the check finds something or sculpting got stuck, and `steps.coarse` is set, the points are read again at a coarser
-/// scale and then through every point (`coarse_reading`); that reading replaces the first
-/// when it passes the check.
+/// The result carries the sampling check's findings ([`Reconstruction::diagnosis`]). Where
+/// the reading doubles back, the point it went out to is left out (`wired_outliers`). When
+/// the check still finds something, or sculpting got stuck, the points are read again at a
+/// coarser scale and then through every point (`coarse_reading`); that reading replaces the
+/// first when it passes the check.
 #[doc(hidden)]
 pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     let mut rec = read(dt, steps);
@@ -131,11 +139,7 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     }
     match coarse_reading::coarse_reading(dt, steps) {
         Some(fine) => {
-            let pairs: Vec<[u32; 2]> = fine
-                .loops
-                .iter()
-                .flat_map(|l| (0..l.len()).map(move |k| [l[k], l[(k + 1) % l.len()]]))
-                .collect();
+            let pairs = chain_pairs(fine.loops.iter().map(|l| (l.as_slice(), true)));
             // Threaded through noisy points, the loops zigzag where the noise does: the
             // status says so (step 10's test), so that a noisy outline is never silent.
             let zigzags = Reading::new(dt, &pairs).zigzags(MAX_SAMPLED_TURN.cos());
@@ -171,12 +175,8 @@ fn without_wired_outliers(dt: &Triangulation, rec: &Reconstruction) -> Option<Re
         .map(|l| vertex_of[l.index])
         .collect();
     outliers.extend(cut);
-    let pairs = curves.iter().flat_map(|(c, closed)| {
-        let n = c.len();
-        let edges = if *closed { n } else { n.saturating_sub(1) };
-        (0..edges).map(move |k| [c[k], c[(k + 1) % n]])
-    });
-    let mut cut_rec = finish(dt, pairs.collect(), Vec::new(), &outliers, rec.stats);
+    let pairs = chain_pairs(curves.iter().map(|(c, closed)| (c.as_slice(), *closed)));
+    let mut cut_rec = finish(dt, pairs, Vec::new(), &outliers, rec.stats);
     // Cutting a point out does not straighten a zigzag elsewhere.
     let readable = matches!(cut_rec.status, Status::Polygon | Status::Polygons | Status::Curves);
     if rec.status == Status::Noisy && readable {
@@ -184,6 +184,17 @@ fn without_wired_outliers(dt: &Triangulation, rec: &Reconstruction) -> Option<Re
     }
     cut_rec.diagnosis = diagnose(dt, &cut_rec);
     Some(cut_rec)
+}
+
+/// The edges of vertex sequences, each closed (the last joins the first) or open.
+fn chain_pairs<'a>(chains: impl Iterator<Item = (&'a [u32], bool)>) -> Vec<[u32; 2]> {
+    chains
+        .flat_map(|(c, closed)| {
+            let n = c.len();
+            let edges = if closed { n } else { n.saturating_sub(1) };
+            (0..edges).map(move |k| [c[k], c[(k + 1) % n]])
+        })
+        .collect()
 }
 
 /// SIG-AUTO's reading of `dt` at the points' own scale (steps 1–6 of the module docs).
