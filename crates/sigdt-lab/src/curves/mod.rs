@@ -8,7 +8,6 @@ mod drawings;
 mod eps_sampling;
 mod junctions;
 mod non_manifold_set;
-mod outline_set;
 
 pub use bezier::{parse_svg_paths, read_svg_paths, BezierPath};
 pub use drawings::{random_drawing, to_svg, DrawingKind};
@@ -18,7 +17,3 @@ pub use eps_sampling::{
 };
 pub use junctions::{sample_with_junctions, JunctionSample, CROSSING_STEPS, SNAP};
 pub use non_manifold_set::{folder_files, non_manifold_cases, NonManifoldCase, PER_KIND};
-pub use outline_set::{
-    outline_files, outline_set, Fate, OutlineCase, OutlineSet, SourceOutline, Variant, APART,
-    JITTER, MAX_OUTLINES, MAX_SAMPLES, MIN_RING_SAMPLES, OUTLIER_SHARES,
-};
