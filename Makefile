@@ -150,7 +150,7 @@ bench-python: py-build build
 ## shapely.concave_hull on data/curves (or DATA=...) and on the real shapes of data/real
 ## (docs/report/real/) and on the non-manifold drawings of data/non-manifold
 ## (docs/report/non-manifold/), and as a user would judge them on data/outlines
-## (docs/report/outlines/: IoU, topology, silent wrong), then the noise, outlier, lfs-noise
+## (docs/report/outlines/: IoU, topology, silent wrong, outliers left out), then the noise, outlier, lfs-noise
 ## and eps sweeps, then the
 ## galleries (docs/report/gallery/; with another DATA, set TABLE1_CASES and NOISE_CASE to its
 ## cases). Takes about ten minutes on 2 cores.
@@ -166,7 +166,7 @@ NOISE_CASE ?= manif_blob_0022
 NON_MANIFOLD_CASES ?= nm_theta_00,nm_cross_00,nm_pierced_00,nm_tee_00,nm_star_00,nm_overlap_00,nm_hash_00
 report: build py-build
 	rm -rf $(TARGET_DIR)/concave-hull $(TARGET_DIR)/concave-hull-real \
-	  $(TARGET_DIR)/concave-hull-non-manifold $(SWEEPS)
+	  $(TARGET_DIR)/concave-hull-non-manifold $(TARGET_DIR)/concave-hull-outlines $(SWEEPS)
 	$(VPY) -m sigdt.baselines $(DATA) $(TARGET_DIR)/concave-hull
 	$(SIGDT) bench $(DATA) --out $(REPORT) --import concave-hull=$(TARGET_DIR)/concave-hull
 	$(VPY) -m sigdt.baselines $(REAL) $(TARGET_DIR)/concave-hull-real
@@ -175,7 +175,9 @@ report: build py-build
 	$(VPY) -m sigdt.baselines $(NON_MANIFOLD) $(TARGET_DIR)/concave-hull-non-manifold
 	$(SIGDT) bench $(NON_MANIFOLD) --out $(REPORT)/non-manifold \
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-non-manifold
-	$(VPY) python/bench/outline_scores.py data/outlines $(REPORT)/outlines
+	$(VPY) -m sigdt.baselines data/outlines $(TARGET_DIR)/concave-hull-outlines --ratio 0.05
+	$(SIGDT) bench data/outlines --out $(REPORT)/outlines \
+	  --import concave-hull=$(TARGET_DIR)/concave-hull-outlines
 	$(SIGDT) sweep noise $(DATA) --out $(SWEEPS)/noise --jobs 2
 	$(SIGDT) sweep outliers $(DATA) --out $(SWEEPS)/outliers --jobs 2
 	$(SIGDT) sweep lfs-noise data/svg/simple.svg --out $(SWEEPS)/lfs-noise --jobs 2

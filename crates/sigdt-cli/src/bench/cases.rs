@@ -1,11 +1,14 @@
 //! The cases of a labelled folder that a run asks for: the rows of its `index.csv`, read by
-//! the lab's one reader ([`sigdt_lab::dataset`]), filtered by `--categories` and `--names`.
+//! the lab's one reader ([`sigdt_lab::dataset`]), filtered by `--categories` and `--names`;
+//! and their sample spacing, a column that reader does not keep.
 
+use std::collections::HashMap;
 use std::path::Path;
 
-use anyhow::{anyhow, bail, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use sigdt_lab::dataset;
 
+use super::csv::parse_csv;
 use super::record::Case;
 
 /// The cases of the folder `dir`, in `index.csv` order, of `categories` (empty: all) and
@@ -37,7 +40,42 @@ pub fn select(dir: &Path, categories: &[String], names: Option<&str>) -> Result<
             }
         }
     }
+    spacings(dir)?; // A malformed spacing fails the run now, not after the first workers.
     Ok(cases)
+}
+
+/// The `spacing` column of `index.csv` in `dir` (the spacing `s` the cases were sampled at),
+/// by case name; empty when there is no such column, and without the cases whose field is
+/// empty, `-` or `nan`.
+///
+/// [`dataset::Case`] keeps only the columns every labelled folder has, so the column is read
+/// here, from the file that [`select`] has already checked.
+pub fn spacings(dir: &Path) -> Result<HashMap<String, f64>> {
+    let path = dir.join("index.csv");
+    let text = std::fs::read_to_string(&path)
+        .with_context(|| format!("{}: cannot read the case index", path.display()))?;
+    let records = parse_csv(text.strip_prefix('\u{feff}').unwrap_or(&text));
+    let mut rows =
+        records.iter().enumerate().filter(|(_, r)| r.iter().any(|f| !f.trim().is_empty()));
+    let Some((_, header)) = rows.next() else { return Ok(HashMap::new()) };
+    let column = |name: &str| header.iter().position(|h| h.trim() == name);
+    let (Some(name), Some(spacing)) = (column("name"), column("spacing")) else {
+        return Ok(HashMap::new());
+    };
+    let mut out = HashMap::new();
+    for (k, row) in rows {
+        let (Some(case), Some(text)) = (row.get(name), row.get(spacing)) else { continue };
+        match text.trim() {
+            "" | "-" | "nan" | "NaN" => {}
+            text => match text.parse::<f64>() {
+                Ok(s) if s.is_finite() && s > 0.0 => {
+                    out.insert(case.trim().to_string(), s);
+                }
+                _ => bail!("{}:{}: spacing '{text}' is not a number > 0", path.display(), k + 1),
+            },
+        }
+    }
+    Ok(out)
 }
 
 #[cfg(test)]
@@ -59,5 +97,19 @@ mod tests {
         assert_eq!(names(&["open", "manifold"], Some("b")), ["ab", "b"]);
         let err = select(&dir.path().join("missing"), &[], None).unwrap_err().to_string();
         assert!(err.contains("index.csv: cannot read the case index"), "{err}");
+        assert!(spacings(dir.path()).unwrap().is_empty());
+    }
+
+    #[test]
+    fn reads_the_spacing_column() {
+        let dir = tempfile::tempdir().unwrap();
+        let index =
+            "\u{feff}name,category,spacing,source\na,outline-clean,0.5,\"x, y\"\nb,open,,\n";
+        std::fs::write(dir.path().join("index.csv"), index).unwrap();
+        let s = spacings(dir.path()).unwrap();
+        assert_eq!((s.len(), s.get("a")), (1, Some(&0.5)));
+        std::fs::write(dir.path().join("index.csv"), "name,category,spacing\na,open,-1\n").unwrap();
+        let err = select(dir.path(), &[], None).unwrap_err().to_string();
+        assert!(err.contains("index.csv:2: spacing '-1'"), "{err}");
     }
 }

@@ -3,6 +3,7 @@
 //! of the paper's Table 2 with SVG charts.
 //!
 //! - `cases`: the cases a run asks for, read by the lab's `index.csv` reader;
+//! - `csv`: the CSV of `results.csv` (and of the one `index.csv` column the lab skips);
 //! - `suite`: a whole run, from the cases to the report's data;
 //! - `runner` and `worker`: one worker process per (case, method), with a time limit;
 //! - `overlap`: proximity-graph statistics and the graph-based ε of the labelled sets;
@@ -10,6 +11,7 @@
 
 pub mod cases;
 pub mod chart;
+mod csv;
 pub mod overlap;
 pub mod record;
 pub mod report;

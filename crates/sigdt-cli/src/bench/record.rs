@@ -8,6 +8,8 @@ use std::io::{self, Read, Write};
 
 use sigdt_lab::dataset;
 
+use super::csv::{parse_csv, quote};
+
 /// One labelled point set of the data folder: its row of `index.csv`, as the lab's
 /// [`dataset`] reader gives it, and what the benchmark computes about it.
 #[derive(Clone, Debug, PartialEq)]
@@ -39,6 +41,86 @@ pub struct Run {
     pub hausdorff: Option<f64>,
     /// Symmetric difference of area, normalised by the ground truth's bounding-box area.
     pub symdiff: Option<f64>,
+    /// The result judged against the case's true curve, for cases that have one
+    /// (`NAME.curve.xy` and `NAME.curve.gt`).
+    pub curve: Option<CurveScore>,
+}
+
+/// A result judged against the case's true curve as a user would (`docs/evaluation.md`,
+/// "Judged as a user would").
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CurveScore {
+    /// Area of the intersection over area of the union of the result's region and the true
+    /// one, both even-odd (`sigdt_lab::eval::region_overlap`).
+    pub iou: f64,
+    /// As many polygons, holes and open paths as the truth.
+    pub topology_right: bool,
+    /// The symmetric Hausdorff distance to the true curve over the case's spacing (its
+    /// `spacing` column, else the median ground-truth edge length); infinite for a result
+    /// without edges, `None` when the case gives no spacing.
+    pub hausdorff_over_s: Option<f64>,
+    /// The result said it may be wrong (`Reconstruction::warns`); imported results never do.
+    pub warned: bool,
+    /// The points the result passes through no edge of, against the truth's; `None` for a
+    /// method that places vertices of its own.
+    pub left_out: Option<LeftOut>,
+}
+
+/// The points a result leaves without edges, counted against the ground truth: the truth's
+/// points without edges are its outliers.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LeftOut {
+    /// Points without ground-truth edges.
+    pub outliers: usize,
+    /// Of those, the ones the result leaves without edges too.
+    pub outliers_left_out: usize,
+    /// Points on the true curve that the result leaves without edges.
+    pub curve_points_left_out: usize,
+}
+
+impl LeftOut {
+    /// Counts over `n` points, of the edges of the `result` and of the `truth`.
+    pub fn count(n: usize, result: &[[usize; 2]], truth: &[[usize; 2]]) -> LeftOut {
+        let touched = |edges: &[[usize; 2]]| {
+            let mut seen = vec![false; n];
+            for &[i, j] in edges {
+                if i != j {
+                    seen[i] = true;
+                    seen[j] = true;
+                }
+            }
+            seen
+        };
+        let (r, t) = (touched(result), touched(truth));
+        let mut count = LeftOut::default();
+        for (in_result, in_truth) in r.into_iter().zip(t) {
+            match (in_truth, in_result) {
+                (false, false) => {
+                    (count.outliers, count.outliers_left_out) =
+                        (count.outliers + 1, count.outliers_left_out + 1)
+                }
+                (false, true) => count.outliers += 1,
+                (true, false) => count.curve_points_left_out += 1,
+                (true, true) => {}
+            }
+        }
+        count
+    }
+}
+
+impl CurveScore {
+    /// The least IoU of a good result.
+    pub const GOOD_IOU: f64 = 0.95;
+
+    /// Topology right and IoU at least [`Self::GOOD_IOU`].
+    pub fn good(&self) -> bool {
+        self.topology_right && self.iou >= Self::GOOD_IOU
+    }
+
+    /// Not good, and no warning said so.
+    pub fn silent_wrong(&self) -> bool {
+        !self.good() && !self.warned
+    }
 }
 
 /// How one method fared on one case.
@@ -115,8 +197,9 @@ impl Default for BenchData {
     }
 }
 
-/// The columns of `results.csv`, in order.
-pub const CSV_HEADER: [&str; 17] = [
+/// The columns of `results.csv`, in order: those of earlier versions, then the
+/// [`CurveScore`] (empty for cases without a true curve).
+pub const CSV_HEADER: [&str; 26] = [
     "name",
     "category",
     "n_points",
@@ -134,7 +217,19 @@ pub const CSV_HEADER: [&str; 17] = [
     "hausdorff",
     "symdiff",
     "message",
+    "iou",
+    "topology_right",
+    "hausdorff_over_s",
+    "warned",
+    "good",
+    "silent_wrong",
+    "outliers",
+    "outliers_left_out",
+    "curve_points_left_out",
 ];
+
+/// The columns of `results.csv` before the [`CurveScore`]: such files are still read.
+const OLD_COLUMNS: usize = 17;
 
 /// Writes one row per entry (case × method) with the header [`CSV_HEADER`].
 ///
@@ -156,6 +251,10 @@ pub fn write_results_csv(data: &BenchData, mut w: impl Write) -> io::Result<()> 
             opt(case.graph_epsilon),
             entry.method.clone(),
         ];
+        let curve = match &entry.outcome {
+            Outcome::Done(Run { curve: Some(c), .. }) => curve_fields(c),
+            _ => Default::default(),
+        };
         row.extend(match &entry.outcome {
             Outcome::Done(r) => [
                 "ok".into(),
@@ -176,13 +275,15 @@ pub fn write_results_csv(data: &BenchData, mut w: impl Write) -> io::Result<()> 
                 outcome_row("timeout", (limit * 1000.0).to_string(), message)
             }
         });
+        row.extend(curve);
         let fields: Vec<String> = row.iter().map(|f| quote(f)).collect();
         writeln!(w, "{}", fields.join(","))?;
     }
     Ok(())
 }
 
-/// Reads a file written by [`write_results_csv`].
+/// Reads a file written by [`write_results_csv`], or by a version before the [`CurveScore`]
+/// columns.
 ///
 /// Cases and methods are listed in the order they first appear. The fields that the CSV does
 /// not hold (`data_dir`, `command`, `machine`, `overlap`) are left empty, and `time_limit_s`
@@ -194,7 +295,7 @@ pub fn read_results_csv(mut r: impl Read) -> io::Result<BenchData> {
     r.read_to_string(&mut text)?;
     let mut records = parse_csv(&text).into_iter();
     let header = records.next().unwrap_or_default();
-    if header != CSV_HEADER {
+    if header != CSV_HEADER && header != CSV_HEADER[..OLD_COLUMNS] {
         return Err(invalid(1, "the header is not that of results.csv"));
     }
     let mut data = BenchData::default();
@@ -203,7 +304,7 @@ pub fn read_results_csv(mut r: impl Read) -> io::Result<BenchData> {
         if rec.len() == 1 && rec[0].is_empty() {
             continue;
         }
-        if rec.len() != CSV_HEADER.len() {
+        if rec.len() != header.len() {
             return Err(invalid(line, "wrong number of fields"));
         }
         let case = match data.cases.iter().position(|c| c.row.name == rec[0]) {
@@ -233,6 +334,7 @@ pub fn read_results_csv(mut r: impl Read) -> io::Result<BenchData> {
                 rmse: opt_num(&rec[13], line)?,
                 hausdorff: opt_num(&rec[14], line)?,
                 symdiff: opt_num(&rec[15], line)?,
+                curve: read_curve(&rec[OLD_COLUMNS..], line)?,
             }),
             "failed" => Outcome::Failed(rec[16].clone()),
             "timeout" => {
@@ -256,46 +358,46 @@ fn outcome_row(outcome: &str, time_ms: String, message: String) -> [String; 11] 
     row
 }
 
+/// The [`CurveScore`] columns of a run.
+fn curve_fields(c: &CurveScore) -> [String; 9] {
+    let flag = |b: bool| u8::from(b).to_string();
+    let count =
+        |f: fn(&LeftOut) -> usize| c.left_out.as_ref().map_or(String::new(), |l| f(l).to_string());
+    [
+        c.iou.to_string(),
+        flag(c.topology_right),
+        opt(c.hausdorff_over_s),
+        flag(c.warned),
+        flag(c.good()),
+        flag(c.silent_wrong()),
+        count(|l| l.outliers),
+        count(|l| l.outliers_left_out),
+        count(|l| l.curve_points_left_out),
+    ]
+}
+
+/// The [`CurveScore`] of the columns after the first [`OLD_COLUMNS`]: `None` when they are
+/// empty or absent (`good` and `silent_wrong` follow from the others).
+fn read_curve(fields: &[String], line: usize) -> io::Result<Option<CurveScore>> {
+    let Some(iou) = fields.first().filter(|f| !f.is_empty()) else { return Ok(None) };
+    Ok(Some(CurveScore {
+        iou: num(iou, line)?,
+        topology_right: fields[1] == "1",
+        hausdorff_over_s: opt_num(&fields[2], line)?,
+        warned: fields[3] == "1",
+        left_out: match fields.get(6).filter(|f| !f.is_empty()) {
+            None => None,
+            Some(outliers) => Some(LeftOut {
+                outliers: num(outliers, line)?,
+                outliers_left_out: num(&fields[7], line)?,
+                curve_points_left_out: num(&fields[8], line)?,
+            }),
+        },
+    }))
+}
+
 fn opt(x: Option<f64>) -> String {
     x.map(|v| v.to_string()).unwrap_or_default()
-}
-
-fn quote(field: &str) -> String {
-    if field.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", field.replace('"', "\"\""))
-    } else {
-        field.to_string()
-    }
-}
-
-/// Splits CSV text into records of unquoted fields (RFC 4180, `\n` or `\r\n` line ends).
-fn parse_csv(text: &str) -> Vec<Vec<String>> {
-    let mut records = Vec::new();
-    let (mut record, mut field) = (Vec::new(), String::new());
-    let (mut quoted, mut chars) = (false, text.chars().peekable());
-    while let Some(c) = chars.next() {
-        match (quoted, c) {
-            (true, '"') if chars.peek() == Some(&'"') => {
-                chars.next();
-                field.push('"');
-            }
-            (true, '"') => quoted = false,
-            (true, c) => field.push(c),
-            (false, '"') => quoted = true,
-            (false, ',') => record.push(std::mem::take(&mut field)),
-            (false, '\r') if chars.peek() == Some(&'\n') => {}
-            (false, '\n') => {
-                record.push(std::mem::take(&mut field));
-                records.push(std::mem::take(&mut record));
-            }
-            (false, c) => field.push(c),
-        }
-    }
-    if !field.is_empty() || !record.is_empty() {
-        record.push(field);
-        records.push(record);
-    }
-    records
 }
 
 fn num<T: std::str::FromStr>(s: &str, line: usize) -> io::Result<T> {
@@ -318,7 +420,8 @@ fn invalid(line: usize, message: &str) -> io::Error {
 mod tests {
     use super::*;
 
-    /// Two cases, two methods: a success, a failure with an awkward message, a time-out.
+    /// Two cases, two methods: a success, a failure with an awkward message, a time-out, and
+    /// a success judged against a true curve.
     fn sample() -> BenchData {
         let case = |name: &str, category: &str, n_points, epsilon| Case {
             row: dataset::Case { name: name.into(), category: category.into(), n_points, epsilon },
@@ -334,7 +437,16 @@ mod tests {
             rmse: Some(1.5e-7),
             hausdorff: None,
             symdiff: Some(0.0),
+            curve: None,
         };
+        let curve = CurveScore {
+            iou: 0.97,
+            topology_right: false,
+            hausdorff_over_s: Some(f64::INFINITY),
+            warned: false,
+            left_out: Some(LeftOut { outliers: 2, outliers_left_out: 1, curve_points_left_out: 0 }),
+        };
+        let judged = Run { curve: Some(curve), ..run.clone() };
         let entry = |case, method: &str, outcome| Entry { case, method: method.into(), outcome };
         BenchData {
             methods: vec!["sig-connect2d".into(), "crust".into()],
@@ -343,6 +455,7 @@ mod tests {
                 entry(0, "sig-connect2d", Outcome::Done(run)),
                 entry(0, "crust", Outcome::Failed("panicked: \"x\", then\nexit 101".into())),
                 entry(1, "sig-connect2d", Outcome::TimedOut(2.5)),
+                entry(1, "crust", Outcome::Done(judged)),
             ],
             time_limit_s: 2.5,
             ..BenchData::default()
@@ -358,7 +471,30 @@ mod tests {
         assert!(text.starts_with("name,category,n_points,"));
         assert!(text.contains("\"a,b\",manifold,12,0.5,,sig-connect2d,ok,1,manifold,12,0,0,"));
         assert!(text.contains("\"panicked: \"\"x\"\", then\nexit 101\""));
+        // The curve columns: empty without a true curve; the topology is wrong, so not good.
+        assert!(text.contains(",2500,,,,timed out after 2.5 s,,,,,,,,,\n"), "{text}");
+        assert!(text.contains(",0,,0.97,0,inf,0,0,1,2,1,0\n"), "{text}");
         assert_eq!(read_results_csv(text.as_bytes()).unwrap(), data);
+    }
+
+    #[test]
+    fn left_out_counts_against_the_truth() {
+        // Points 0-2 a triangle in both; 3 an outlier left out, 4 one wired in; the result
+        // skips curve point 5 (a self loop is no edge).
+        let truth = [[0, 1], [1, 2], [0, 2], [5, 6], [6, 0]];
+        let result = [[0, 1], [1, 2], [0, 2], [4, 6], [6, 0], [5, 5]];
+        let count = LeftOut::count(7, &result, &truth);
+        assert_eq!(count, LeftOut { outliers: 2, outliers_left_out: 1, curve_points_left_out: 1 });
+    }
+
+    #[test]
+    fn files_without_the_curve_columns_are_read() {
+        let old = format!(
+            "{}\nc,open,30,,,crust,ok,1,curves,4,0,0,0.5,0,0,0,\n",
+            CSV_HEADER[..OLD_COLUMNS].join(",")
+        );
+        let data = read_results_csv(old.as_bytes()).unwrap();
+        assert!(matches!(&data.entries[0].outcome, Outcome::Done(r) if r.curve.is_none()));
     }
 
     #[test]

@@ -4,6 +4,7 @@
 //! A worker that exits with an error, crashes, prints nothing usable or outlives the time
 //! limit is recorded as a failure or a time-out of that one pair; the run goes on.
 
+use std::collections::HashMap;
 use std::ffi::{OsStr, OsString};
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -17,6 +18,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 
 use sigdt_lab::dataset;
 
+use super::cases;
 use super::record::{Case, Entry, Outcome, Run};
 
 /// What to run: the methods by name and the worker's settings.
@@ -69,6 +71,7 @@ struct WorkerExe {
 /// Runs `plan` over `cases`; entries are in (case, method) order whatever `jobs` is.
 pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
     let exe = worker_exe()?;
+    let spacings = cases::spacings(plan.dir)?;
     let tasks: Vec<(usize, &String)> =
         (0..cases.len()).flat_map(|c| plan.methods.iter().map(move |m| (c, m))).collect();
     let bar = ProgressBar::new(tasks.len() as u64);
@@ -86,7 +89,7 @@ pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
                 let Some(&(case, method)) = tasks.get(k) else { break };
                 let row = &cases[case].row;
                 bar.set_message(format!("{} {}", row.name, method));
-                let outcome = run_one(&exe, plan, row, method);
+                let outcome = run_one(&exe, plan, row, spacings.get(&row.name), method);
                 let entry = Entry { case, method: method.clone(), outcome };
                 results.lock().unwrap_or_else(|e| e.into_inner())[k] = Some(entry);
                 bar.inc(1);
@@ -98,20 +101,29 @@ pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
     Ok(results.into_iter().flatten().collect())
 }
 
-/// Runs one worker and turns whatever happened into an [`Outcome`].
-fn run_one(exe: &WorkerExe, plan: &Plan<'_>, case: &dataset::Case, method: &str) -> Outcome {
+/// Runs one worker on `case`, sampled at `spacing` if known, and turns whatever happened into
+/// an [`Outcome`].
+fn run_one(
+    exe: &WorkerExe,
+    plan: &Plan<'_>,
+    case: &dataset::Case,
+    spacing: Option<&f64>,
+    method: &str,
+) -> Outcome {
     let repeat = plan.repeat.to_string();
-    match spawn_worker(exe, &case.files(plan.dir), ["--method", method, "--repeat", &repeat]) {
+    let args = ["--method", method, "--repeat", &repeat];
+    match spawn_worker(exe, &case.files(plan.dir), spacing, args) {
         Err(e) => Outcome::Failed(format!("cannot start the worker: {e}")),
         Ok(child) => wait(child, plan.time_limit),
     }
 }
 
-/// Starts `sigdt bench-worker ARGS POINTS GT [--truth TRUTH] [--curve XY --curve-gt GT]` on a
-/// case's files, its output piped.
+/// Starts `sigdt bench-worker ARGS POINTS GT [--truth TRUTH] [--curve XY --curve-gt GT]
+/// [--spacing S]` on a case's files, its output piped.
 fn spawn_worker<A: AsRef<OsStr>>(
     exe: &WorkerExe,
     files: &dataset::CaseFiles,
+    spacing: Option<&f64>,
     args: impl IntoIterator<Item = A>,
 ) -> std::io::Result<Child> {
     let mut command = Command::new(&exe.program);
@@ -123,13 +135,16 @@ fn spawn_worker<A: AsRef<OsStr>>(
     if let Some((points, edges)) = &files.curve {
         command.arg("--curve").arg(points).arg("--curve-gt").arg(edges);
     }
+    if let Some(spacing) = spacing {
+        command.arg("--spacing").arg(format!("{spacing:e}"));
+    }
     command.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn()
 }
 
 /// Waits for `child` at most `limit`, killing it after that, and reads its result line.
 fn wait(child: Child, limit: Duration) -> Outcome {
     match finish(child, limit) {
-        Err(outcome) => outcome,
+        Err(outcome) => *outcome,
         Ok(stdout) => match stdout.lines().find_map(Run::parse) {
             Some(run) => Outcome::Done(run),
             None => Outcome::Failed(format!("unreadable worker output: {:?}", stdout.trim())),
@@ -138,8 +153,9 @@ fn wait(child: Child, limit: Duration) -> Outcome {
 }
 
 /// The standard output of `child` once it succeeds within `limit`; otherwise the outcome
-/// that says what happened (killed after `limit`, failed with its last message).
-fn finish(mut child: Child, limit: Duration) -> Result<String, Outcome> {
+/// that says what happened (killed after `limit`, failed with its last message), boxed: a
+/// finished [`Outcome`] is large, and this one never is.
+fn finish(mut child: Child, limit: Duration) -> Result<String, Box<Outcome>> {
     // Drain the pipes on threads so that a chatty worker never blocks on a full pipe.
     let drain = |pipe: Option<Box<dyn Read + Send>>| {
         std::thread::spawn(move || {
@@ -162,18 +178,22 @@ fn finish(mut child: Child, limit: Duration) -> Result<String, Outcome> {
                 break None;
             }
             Ok(None) => std::thread::sleep(Duration::from_millis(2)),
-            Err(e) => return Err(Outcome::Failed(format!("waiting for the worker: {e}"))),
+            Err(e) => {
+                return Err(Box::new(Outcome::Failed(format!("waiting for the worker: {e}"))))
+            }
         }
     };
     let (stdout, stderr) = (stdout.join().unwrap_or_default(), stderr.join().unwrap_or_default());
-    let Some(status) = status else { return Err(Outcome::TimedOut(limit.as_secs_f64())) };
+    let Some(status) = status else {
+        return Err(Box::new(Outcome::TimedOut(limit.as_secs_f64())));
+    };
     if !status.success() {
         let message = stderr.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("");
         let message = message.strip_prefix("sigdt: ").unwrap_or(message);
-        return Err(Outcome::Failed(match status.code() {
+        return Err(Box::new(Outcome::Failed(match status.code() {
             Some(code) => format!("exit status {code}: {message}"),
             None => format!("killed by a signal ({status}): {message}"),
-        }));
+        })));
     }
     Ok(stdout)
 }
@@ -184,7 +204,7 @@ fn finish(mut child: Child, limit: Duration) -> Result<String, Outcome> {
 pub fn fill_graph_epsilon(plan: &Plan<'_>, cases: &mut [Case]) -> Result<()> {
     let exe = worker_exe()?;
     for case in cases.iter_mut() {
-        case.graph_epsilon = spawn_worker(&exe, &case.row.files(plan.dir), ["--epsilon"])
+        case.graph_epsilon = spawn_worker(&exe, &case.row.files(plan.dir), None, ["--epsilon"])
             .ok()
             .and_then(|child| finish(child, plan.time_limit).ok())
             .and_then(|out| out.trim().strip_prefix("graph_epsilon=")?.parse::<f64>().ok())
@@ -199,12 +219,13 @@ pub fn fill_graph_epsilon(plan: &Plan<'_>, cases: &mut [Case]) -> Result<()> {
 pub fn import(label: &str, results: &Path, plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
     let exe = worker_exe()?;
     let times = read_times(&results.join("times.csv"))?;
+    let spacings: HashMap<String, f64> = cases::spacings(plan.dir)?;
     let mut entries = Vec::new();
     for (case, c) in cases.iter().enumerate() {
         let edges = results.join(format!("{}.edges", c.row.name));
         let outcome = if edges.is_file() {
             let score = [OsStr::new("--score"), edges.as_os_str()];
-            match spawn_worker(&exe, &c.row.files(plan.dir), score) {
+            match spawn_worker(&exe, &c.row.files(plan.dir), spacings.get(&c.row.name), score) {
                 Err(e) => Outcome::Failed(format!("cannot start the worker: {e}")),
                 Ok(child) => match wait(child, plan.time_limit) {
                     Outcome::Done(mut run) => {

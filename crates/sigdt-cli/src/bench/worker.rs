@@ -11,7 +11,7 @@ use anyhow::{Context, Result};
 use sigdt::{Edge, Options, Point};
 use sigdt_lab::dataset::CaseFiles;
 
-use super::record::Run;
+use super::record::{CurveScore, LeftOut, Run};
 
 /// How often to run the method for timing: once to warm up, then `repeat` times (fewer
 /// when one run takes long), reporting the median.
@@ -22,9 +22,11 @@ impl Run {
     /// The one-line form.
     pub fn line(&self) -> String {
         let opt = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:e}"));
+        let flag = |b: Option<bool>| b.map_or("-".to_string(), |b| u8::from(b).to_string());
+        let curve = self.curve.as_ref();
         format!(
             "exact={} status={} edges={} missing={} extra={} time_ms={:e} rmse={} hausdorff={} \
-             symdiff={}",
+             symdiff={} iou={} topology_right={} h_over_s={} warned={} left_out={}",
             u8::from(self.exact),
             self.status,
             self.edges,
@@ -33,7 +35,15 @@ impl Run {
             self.time_ms,
             opt(self.rmse),
             opt(self.hausdorff),
-            opt(self.symdiff)
+            opt(self.symdiff),
+            opt(curve.map(|c| c.iou)),
+            flag(curve.map(|c| c.topology_right)),
+            opt(curve.and_then(|c| c.hausdorff_over_s)),
+            flag(curve.map(|c| c.warned)),
+            curve.and_then(|c| c.left_out).map_or("-".to_string(), |l| format!(
+                "{}/{}/{}",
+                l.outliers, l.outliers_left_out, l.curve_points_left_out
+            )),
         )
     }
 
@@ -48,6 +58,27 @@ impl Run {
                 text => text.parse().ok().map(Some),
             }
         };
+        let curve = match opt("iou")? {
+            None => None,
+            Some(iou) => Some(CurveScore {
+                iou,
+                topology_right: field("topology_right")? == "1",
+                hausdorff_over_s: opt("h_over_s")?,
+                warned: field("warned")? == "1",
+                left_out: match field("left_out")? {
+                    "-" => None,
+                    text => {
+                        let mut counts = text.split('/').map(|c| c.parse().ok());
+                        let mut next = || counts.next().flatten();
+                        Some(LeftOut {
+                            outliers: next()?,
+                            outliers_left_out: next()?,
+                            curve_points_left_out: next()?,
+                        })
+                    }
+                },
+            }),
+        };
         Some(Run {
             exact: field("exact")? == "1",
             status: field("status")?.to_string(),
@@ -58,13 +89,19 @@ impl Run {
             rmse: opt("rmse")?,
             hausdorff: opt("hausdorff")?,
             symdiff: opt("symdiff")?,
+            curve,
         })
     }
 }
 
-/// Runs `options` on the case and measures.
-pub fn measure(files: &CaseFiles, options: &Options, repeat: usize) -> Result<Run> {
-    let (pts, truth) = read_case(files)?;
+/// Runs `options` on the case, sampled at `spacing` when known, and measures.
+pub fn measure(
+    files: &CaseFiles,
+    spacing: Option<f64>,
+    options: &Options,
+    repeat: usize,
+) -> Result<Run> {
+    let (pts, truth) = read_case(files, spacing)?;
     let run = || sigdt::reconstruct(&pts, options);
     let start = Instant::now();
     let rec = run()?;
@@ -84,7 +121,8 @@ pub fn measure(files: &CaseFiles, options: &Options, repeat: usize) -> Result<Ru
     let indexed_like_input = !matches!(rec.vertices, sigdt::Vertices::New(_));
     let time = times[times.len() / 2];
     let vertices = rec.vertex_positions(&pts);
-    score(vertices, indexed_like_input, &truth, &rec.edges, rec.status.name(), time)
+    let status = rec.status.name();
+    score(vertices, indexed_like_input, &truth, &rec.edges, status, rec.warns(), time)
         .context("scoring the result")
 }
 
@@ -96,6 +134,7 @@ pub fn graph_epsilon(points: &Path, gt: &Path) -> Result<f64> {
 }
 
 /// What a result is scored against.
+#[derive(Clone)]
 pub struct Truth {
     /// The ground-truth edges, between the input points' indices: exactness.
     pub gt: Vec<Edge>,
@@ -103,6 +142,9 @@ pub struct Truth {
     pub positions: Vec<Point>,
     /// The curve the points were sampled from, as a dense polyline, when given.
     pub curve: Option<(Vec<Point>, Vec<Edge>)>,
+    /// The spacing the points were sampled at, when known: the unit of the Hausdorff
+    /// distance to the curve (else the median ground-truth edge length).
+    pub spacing: Option<f64>,
 }
 
 impl Truth {
@@ -114,10 +156,26 @@ impl Truth {
             None => (&self.positions, &self.gt),
         }
     }
+
+    /// The length the Hausdorff distance to the curve is counted in: the spacing when known,
+    /// else the median length of the ground-truth edges; `None` if that is 0.
+    fn unit(&self) -> Option<f64> {
+        let length = |&[i, j]: &Edge| {
+            let (p, q) = (self.positions[i], self.positions[j]);
+            (p[0] - q[0]).hypot(p[1] - q[1])
+        };
+        let median = || {
+            let mut lengths: Vec<f64> = self.gt.iter().map(length).collect();
+            lengths.sort_by(f64::total_cmp);
+            lengths.get(lengths.len() / 2).copied()
+        };
+        self.spacing.or_else(median).filter(|&u| u > 0.0 && u.is_finite())
+    }
 }
 
-/// A case as read: its input points and what results are scored against.
-fn read_case(files: &CaseFiles) -> Result<(Vec<Point>, Truth)> {
+/// A case as read, sampled at `spacing` when known: its input points and what results are
+/// scored against.
+fn read_case(files: &CaseFiles, spacing: Option<f64>) -> Result<(Vec<Point>, Truth)> {
     let pts = sigdt::io::read_points(&files.points)?;
     let gt = sigdt::io::read_edges_of(&files.gt, pts.len())?;
     let positions = match &files.truth {
@@ -146,29 +204,32 @@ fn read_case(files: &CaseFiles) -> Result<(Vec<Point>, Truth)> {
         }
         None => None,
     };
-    Ok((pts, Truth { gt, positions, curve }))
+    Ok((pts, Truth { gt, positions, curve, spacing }))
 }
 
-/// Scores the edge file `edges` (another tool's result on the case) with status
-/// `imported`; the time is left NaN for the caller, who has the tool's own times.
-pub fn score_file(files: &CaseFiles, edges: &Path) -> Result<Run> {
-    let (pts, truth) = read_case(files)?;
+/// Scores the edge file `edges` (another tool's result on the case, sampled at `spacing`
+/// when known) with status `imported`, never warned; the time is left NaN for the caller,
+/// who has the tool's own times.
+pub fn score_file(files: &CaseFiles, spacing: Option<f64>, edges: &Path) -> Result<Run> {
+    let (pts, truth) = read_case(files, spacing)?;
     let mut result = sigdt::io::read_edges_of(edges, pts.len())?;
     result.sort_unstable();
     result.dedup();
-    score(&pts, true, &truth, &result, "imported", f64::NAN).context("scoring the result")
+    score(&pts, true, &truth, &result, "imported", false, f64::NAN).context("scoring the result")
 }
 
 /// Scores `edges`, a result between `vertices`, against `truth`. `indexed_like_input`: vertex
 /// `i` of the result is input point `i` (possibly moved), so the edges can be exact; false for
 /// a method that places vertices of its own. Distances and areas are measured between the
-/// result's vertices and the truth's [reference](Truth::reference) geometry.
+/// result's vertices and the truth's [reference](Truth::reference) geometry; where the truth
+/// has a curve, the result is also judged against it ([`CurveScore`], with `warned`).
 pub fn score(
     vertices: &[Point],
     indexed_like_input: bool,
     truth: &Truth,
     edges: &[Edge],
     status: &str,
+    warned: bool,
     time_ms: f64,
 ) -> Result<Run> {
     let diff = sigdt_lab::eval::edge_diff(edges, &truth.gt);
@@ -179,6 +240,23 @@ pub fn score(
     let reference_edges: Vec<Edge> = reference_edges.iter().map(|&[i, j]| [i + r, j + r]).collect();
     let distances = sigdt_lab::eval::distance_errors(&all, edges, &reference_edges)?;
     let area = sigdt_lab::eval::area_difference(&all, edges, &reference_edges)?;
+    let curve = match truth.curve {
+        None => None,
+        Some(_) => {
+            let region = sigdt_lab::eval::region_overlap(&all, edges, &reference_edges)?;
+            // The Hausdorff distance is a fraction of the curve's diagonal; none: no edge.
+            let hausdorff =
+                distances.map_or(f64::INFINITY, |d| d.hausdorff * diagonal(&all, &reference_edges));
+            Some(CurveScore {
+                iou: region.iou,
+                topology_right: region.topology_right(),
+                hausdorff_over_s: truth.unit().map(|unit| hausdorff / unit),
+                warned,
+                left_out: indexed_like_input
+                    .then(|| LeftOut::count(vertices.len(), edges, &truth.gt)),
+            })
+        }
+    };
     Ok(Run {
         exact: indexed_like_input && diff.missing.is_empty() && diff.extra.is_empty(),
         status: status.to_string(),
@@ -189,7 +267,23 @@ pub fn score(
         rmse: distances.map(|d| d.rmse),
         hausdorff: distances.map(|d| d.hausdorff),
         symdiff: area.normalised,
+        curve,
     })
+}
+
+/// The diagonal of the bounding box of the ends of `edges`: what [`distance_errors`] divides
+/// by when they are the ground truth.
+///
+/// [`distance_errors`]: sigdt_lab::eval::distance_errors
+fn diagonal(points: &[Point], edges: &[Edge]) -> f64 {
+    let (lo, hi) = edges
+        .iter()
+        .flatten()
+        .map(|&i| points[i])
+        .fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), p| {
+            ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
+        });
+    (hi[0] - lo[0]).hypot(hi[1] - lo[1])
 }
 
 #[cfg(test)]
@@ -204,13 +298,16 @@ mod tests {
         let square_points = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
         let moved = [[-0.1, 0.0], [1.1, 0.0], [1.1, 1.0], [-0.1, 1.0]];
         let square = vec![[0, 1], [0, 3], [1, 2], [2, 3]];
-        let truth = Truth { gt: square.clone(), positions: square_points.clone(), curve: None };
-        let same = score(&square_points, true, &truth, &square, "polygon", 1.0).unwrap();
+        let (positions, gt) = (square_points.clone(), square.clone());
+        let truth = Truth { gt, positions, curve: None, spacing: None };
+        let same = score(&square_points, true, &truth, &square, "polygon", false, 1.0).unwrap();
         assert!(same.exact && same.rmse == Some(0.0));
-        let off = score(&moved, true, &truth, &square, "polygon", 1.0).unwrap();
+        let off = score(&moved, true, &truth, &square, "polygon", false, 1.0).unwrap();
         assert!(off.exact && off.rmse.unwrap() > 0.01 && off.symdiff.unwrap() > 0.1);
-        let own = score(&moved, false, &truth, &square, "curves", 1.0).unwrap();
+        let own = score(&moved, false, &truth, &square, "curves", false, 1.0).unwrap();
         assert!(!own.exact && own.rmse == off.rmse);
+        // Without a true curve, no curve score.
+        assert!(same.curve.is_none() && own.curve.is_none());
     }
 
     #[test]
@@ -229,11 +326,11 @@ mod tests {
             .collect();
         let mut ring: Vec<Edge> = (1..n).map(|k| [k - 1, k]).collect();
         ring.push([0, n - 1]);
-        let polygon = Truth { gt: square.clone(), positions: corners.clone(), curve: None };
-        let curve =
-            Truth { gt: square.clone(), positions: corners.clone(), curve: Some((circle, ring)) };
-        let on_polygon = score(&corners, true, &polygon, &square, "polygon", 1.0).unwrap();
-        let on_curve = score(&corners, true, &curve, &square, "polygon", 1.0).unwrap();
+        let (gt, positions) = (square.clone(), corners.clone());
+        let polygon = Truth { gt, positions, curve: None, spacing: None };
+        let curve = Truth { curve: Some((circle, ring)), ..polygon.clone() };
+        let on_polygon = score(&corners, true, &polygon, &square, "polygon", true, 1.0).unwrap();
+        let on_curve = score(&corners, true, &curve, &square, "polygon", true, 1.0).unwrap();
         assert!(on_polygon.exact && on_curve.exact);
         assert!(on_polygon.rmse.unwrap() < 1e-12);
         // The sagitta of a quarter chord is 1 - cos(pi/4) = 0.29 of the radius, 0.10 of the
@@ -241,6 +338,27 @@ mod tests {
         let rmse = on_curve.rmse.unwrap();
         assert!(rmse > 0.02 && rmse < 0.104, "{rmse}");
         assert!(on_curve.symdiff.unwrap() > 0.1);
+        // As a user would judge it: the square covers 2/pi of the disc, with its topology;
+        // 0.29 off at most, over the median edge length sqrt 2 (no spacing given), or over
+        // the spacing when given. A warning is kept; an empty result is infinitely far.
+        let judged = on_curve.curve.unwrap();
+        assert!((judged.iou - 2.0 / std::f64::consts::PI).abs() < 1e-3, "{judged:?}");
+        assert!(judged.topology_right && judged.warned && !judged.good());
+        let h = 1.0 - std::f64::consts::FRAC_PI_4.cos();
+        assert!((judged.hausdorff_over_s.unwrap() - h / 2f64.sqrt()).abs() < 1e-3, "{judged:?}");
+        let spaced = Truth { spacing: Some(0.5), ..curve.clone() };
+        let at = score(&corners, true, &spaced, &square, "polygon", false, 1.0).unwrap();
+        let judged = at.curve.unwrap();
+        assert!((judged.hausdorff_over_s.unwrap() - h / 0.5).abs() < 2e-3, "{judged:?}");
+        assert!(judged.silent_wrong());
+        let empty = score(&corners, true, &curve, &[], "empty", false, 1.0).unwrap();
+        let judged = empty.curve.unwrap();
+        assert_eq!((judged.iou, judged.hausdorff_over_s), (0.0, Some(f64::INFINITY)));
+        let left_out = LeftOut { outliers: 0, outliers_left_out: 0, curve_points_left_out: 4 };
+        assert_eq!(judged.left_out, Some(left_out));
+        assert_eq!(on_curve.curve.unwrap().left_out, Some(LeftOut::default()));
+        let own = score(&corners, false, &curve, &square, "curves", false, 1.0).unwrap();
+        assert_eq!(own.curve.unwrap().left_out, None, "its own vertices: nothing to count");
     }
 
     #[test]
@@ -255,8 +373,23 @@ mod tests {
             rmse: Some(1e-3),
             hausdorff: None,
             symdiff: Some(0.0),
+            curve: None,
         };
-        assert_eq!(Run::parse(&m.line()), Some(m));
+        assert_eq!(Run::parse(&m.line()), Some(m.clone()));
+        let curve = CurveScore {
+            iou: 0.25,
+            topology_right: true,
+            hausdorff_over_s: Some(f64::INFINITY),
+            warned: true,
+            left_out: Some(LeftOut { outliers: 3, outliers_left_out: 2, curve_points_left_out: 1 }),
+        };
+        let judged = Run { curve: Some(curve), ..m.clone() };
+        assert_eq!(Run::parse(&judged.line()), Some(judged));
+        let unspaced = Run {
+            curve: Some(CurveScore { hausdorff_over_s: None, left_out: None, ..curve }),
+            ..m
+        };
+        assert_eq!(Run::parse(&unspaced.line()), Some(unspaced));
         assert_eq!(Run::parse("exact=1 status=polygon"), None);
     }
 }

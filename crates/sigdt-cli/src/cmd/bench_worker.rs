@@ -28,6 +28,10 @@ pub struct WorkerArgs {
     /// The edges of that curve.
     #[arg(long, requires = "curve")]
     pub curve_gt: Option<PathBuf>,
+    /// The spacing the points were sampled at: the unit of the Hausdorff distance to the
+    /// curve (default: the median ground-truth edge length).
+    #[arg(long, value_name = "S", value_parser = positive)]
+    pub spacing: Option<f64>,
     /// Method.
     #[arg(long, value_parser = crate::methods::parser(),
           required_unless_present_any = ["score", "epsilon"])]
@@ -56,13 +60,20 @@ pub fn run(args: &WorkerArgs) -> Result<()> {
         curve: args.curve.clone().zip(args.curve_gt.clone()),
     };
     let run = match (&args.score, args.method) {
-        (Some(edges), _) => worker::score_file(&files, edges)?,
+        (Some(edges), _) => worker::score_file(&files, args.spacing, edges)?,
         (None, Some(method)) => {
             let options = Options { method, ..Options::default() };
-            worker::measure(&files, &options, args.repeat)?
+            worker::measure(&files, args.spacing, &options, args.repeat)?
         }
         (None, None) => anyhow::bail!("bench-worker needs --method or --score"),
     };
     println!("{}", run.line());
     Ok(())
+}
+
+fn positive(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if s.is_finite() && s > 0.0 => Ok(s),
+        _ => Err(format!("'{text}' is not a number > 0")),
+    }
 }

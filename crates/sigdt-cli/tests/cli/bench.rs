@@ -59,6 +59,78 @@ fn bench_imports_results_of_other_tools() {
     assert!(csv.lines().any(|l| l.starts_with("square,") && l.contains(",mine,ok,0,")), "{csv}");
 }
 
+/// Writes a case of `rings` (each `(samples, radius)`, concentric circles) sampled from
+/// its true curve, the same circles as 400-gons in `NAME.curve.xy` / `NAME.curve.gt`.
+fn write_circles(d: &Path, name: &str, rings: &[(usize, f64)]) {
+    let (mut points, mut gt, mut curve, mut curve_gt) = (vec![], vec![], vec![], vec![]);
+    for &(n, r) in rings {
+        let shift =
+            |e: Vec<[usize; 2]>, by: usize| e.into_iter().map(move |[i, j]| [i + by, j + by]);
+        gt.extend(shift(cycle_edges(n), points.len()));
+        points.extend(circle(n, r));
+        curve_gt.extend(shift(cycle_edges(400), curve.len()));
+        curve.extend(circle(400, r));
+    }
+    write_points(d, &format!("{name}.xy"), &points);
+    fs::write(d.join(format!("{name}.gt")), edges_text(&gt)).unwrap();
+    write_points(d, &format!("{name}.curve.xy"), &curve);
+    fs::write(d.join(format!("{name}.curve.gt")), edges_text(&curve_gt)).unwrap();
+}
+
+#[test]
+fn bench_judges_results_against_true_curves() {
+    // A circle and an annulus with their true curves (the circle's spacing in the index, the
+    // annulus's the median edge length), beside the labelled folder's cases without one.
+    let data = labelled_folder();
+    let d = data.path();
+    write_circles(d, "disc", &[(40, 1.0)]);
+    write_circles(d, "annulus", &[(48, 2.0), (24, 1.0)]);
+    let index = "name,category,n_points,epsilon,spacing\ngon,manifold,12,0.27,\n\
+                 disc,outline-clean,40,,0.157\nannulus,outline-clean,72,,\n";
+    fs::write(d.join("index.csv"), index).unwrap();
+    let hull = tempdir();
+    fs::write(hull.path().join("disc.edges"), edges_text(&cycle_edges(40))).unwrap();
+    fs::write(hull.path().join("annulus.edges"), edges_text(&cycle_edges(48))).unwrap();
+    let import = format!("hull={}", hull.path().display());
+    let out = tempdir();
+    let (ds, o) = (d.to_str().unwrap(), out.path().to_str().unwrap());
+    sigdt(&["bench", ds, "--method", "sig-auto", "--out", o, "--import", &import]).expect(0);
+    let csv = fs::read_to_string(out.path().join("results.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let row = |name: &str, method: &str| -> Vec<String> {
+        let line = csv.lines().find(|l| l.starts_with(&format!("{name},")) && l.contains(method));
+        line.unwrap_or_else(|| panic!("no {name} {method}\n{csv}"))
+            .split(',')
+            .map(String::from)
+            .collect()
+    };
+    let field = |row: &[String], column: &str| {
+        row[header.iter().position(|h| *h == column).unwrap()].clone()
+    };
+    // Cases without a true curve: the new columns are empty.
+    let gon = row("gon", ",sig-auto,");
+    assert!(
+        gon.len() == header.len() && gon[header.len() - 6..].iter().all(|f| f.is_empty()),
+        "{csv}"
+    );
+    // SIG-AUTO returns the circle and the annulus with its hole: good, and quiet about it.
+    for name in ["disc", "annulus"] {
+        let r = row(name, ",sig-auto,");
+        let iou: f64 = field(&r, "iou").parse().unwrap();
+        let h: f64 = field(&r, "hausdorff_over_s").parse().unwrap();
+        assert!(iou > 0.98 && h < 0.1, "{name}: {csv}");
+        assert_eq!(field(&r, "topology_right") + &field(&r, "good") + &field(&r, "warned"), "110");
+    }
+    // The import never warns: the disc is good, the annulus without its hole silently wrong.
+    let disc = row("disc", ",hull,");
+    assert_eq!([field(&disc, "good"), field(&disc, "warned")], ["1", "0"], "{csv}");
+    let annulus = row("annulus", ",hull,");
+    assert_eq!(field(&annulus, "topology_right") + &field(&annulus, "silent_wrong"), "01");
+    let md = fs::read_to_string(out.path().join("report.md")).unwrap();
+    assert!(md.contains("## Judged against the true curve"), "{md}");
+    assert!(md.contains("- `hull` (1): `annulus` (IoU 0.74"), "{md}");
+}
+
 #[test]
 fn imported_results_are_scored_under_the_time_limit_and_pipes_are_refused() {
     let data = tempdir();

@@ -48,13 +48,7 @@ pub struct AreaDifference {
 /// non-finite points or edges out of range.
 pub fn area_difference(points: &[Point], result: &[Edge], gt: &[Edge]) -> Result<AreaDifference> {
     check_all(points, result, gt)?;
-    let (mut r, mut g) = (rings(points, result), rings(points, gt));
-    // The rings scaled by a power of two into [1, 2): i_overlay's integer grid overflowed
-    // on rings of subnormal coordinates (fuzzing finding 5). Areas scale by its square.
-    let scale = UnitScale::of(r.iter().chain(&g).flatten().flatten().copied());
-    for p in r.iter_mut().chain(g.iter_mut()).flatten() {
-        *p = scale.apply(*p);
-    }
+    let (r, g, scale) = unit_rings(points, result, gt);
     let area = match (r.is_empty(), g.is_empty()) {
         (true, true) => 0.0,
         (false, true) => region_area(&r),
@@ -70,6 +64,22 @@ pub fn area_difference(points: &[Point], result: &[Edge], gt: &[Edge]) -> Result
         edge_bbox(points, &proper_edges(gt)).map_or(0.0, |b| extent(b)[0] * extent(b)[1]);
     let normalised = (box_area > 0.0).then(|| area / box_area);
     Ok(AreaDifference { area, normalised })
+}
+
+/// The rings of `a` and of `b` (steps 1–2), scaled together by the power of two that brings
+/// their coordinates into [1, 2): i_overlay's integer grid overflowed on rings of subnormal
+/// coordinates (fuzzing finding 5). Areas measured on them scale by its square.
+pub(crate) fn unit_rings(
+    points: &[Point],
+    a: &[Edge],
+    b: &[Edge],
+) -> (Vec<Vec<Point>>, Vec<Vec<Point>>, UnitScale) {
+    let (mut a, mut b) = (rings(points, a), rings(points, b));
+    let scale = UnitScale::of(a.iter().chain(&b).flatten().flatten().copied());
+    for p in a.iter_mut().chain(b.iter_mut()).flatten() {
+        *p = scale.apply(*p);
+    }
+    (a, b, scale)
 }
 
 /// The even-odd region of `edges` as rings of points (step 1–2).
@@ -99,7 +109,7 @@ fn region_area(rings: &[Vec<Point>]) -> f64 {
 }
 
 /// Total area of overlay output: each shape is an outer contour followed by its holes.
-fn shapes_area(shapes: &[Vec<Vec<Point>>]) -> f64 {
+pub(crate) fn shapes_area(shapes: &[Vec<Vec<Point>>]) -> f64 {
     let mut total = 0.0;
     for shape in shapes {
         for (k, contour) in shape.iter().enumerate() {

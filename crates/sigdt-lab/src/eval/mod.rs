@@ -18,6 +18,7 @@ mod input;
 mod medial;
 mod metrics;
 mod overlap;
+mod region;
 
 pub use area::{area_difference, AreaDifference};
 pub use distance::{
@@ -27,3 +28,4 @@ pub use epsilon::{epsilon, graph_epsilon, EpsilonVariant};
 pub use exact::{edge_diff, is_exact, EdgeDiff};
 pub use metrics::{evaluate, Metrics};
 pub use overlap::{overlap, Coverage, GtCoverage, Overlap};
+pub use region::{region_overlap, topology, RegionOverlap, Topology};

@@ -1,6 +1,7 @@
 //! The benchmark report: Markdown tables after the paper's Table 2, a CSV file and SVG charts.
 
 mod charts;
+mod curve;
 mod exact;
 mod sections;
 mod summary;

@@ -1,7 +1,9 @@
 //! The report on a small synthetic benchmark: 2 methods, 3 categories, a failure, a time-out.
 use super::write_report;
 use crate::bench::chart::assert_well_formed;
-use crate::bench::record::{read_results_csv, BenchData, Case, Entry, Outcome, OverlapStat, Run};
+use crate::bench::record::{
+    read_results_csv, BenchData, Case, CurveScore, Entry, LeftOut, Outcome, OverlapStat, Run,
+};
 use sigdt_lab::dataset;
 use std::fs;
 
@@ -21,6 +23,7 @@ fn done(exact: bool, time_ms: f64, rmse: Option<f64>) -> Outcome {
         rmse,
         hausdorff: rmse.map(|r| 2.0 * r),
         symdiff: Some(0.0),
+        curve: None,
     })
 }
 
@@ -108,6 +111,7 @@ fn writes_every_file() {
     assert_eq!(names, expected, "the sample has open cases, not multiple or non-manifold ones");
     let md = fs::read_to_string(dir.path().join("out/report.md")).unwrap();
     assert!(md.contains("](symdiff_open.svg)") && !md.contains("symdiff_multiple"));
+    assert!(!md.contains("true curve"), "no case has a true curve");
     let symdiff = fs::read_to_string(dir.path().join("out/symdiff_open.svg")).unwrap();
     assert!(symdiff.contains("Symmetric area difference, open"));
     let csv = fs::read(dir.path().join("out/results.csv")).unwrap();
@@ -208,4 +212,97 @@ fn runtime_columns_at_the_papers_large_size_and_the_largest() {
     let header = row(&md, "| Method |");
     let (near, large) = (header.find("`o1` (n = 9991) ms"), header.find("`big` (n = 100000) ms"));
     assert!(near.is_some() && large.is_some() && near < large, "{header}");
+}
+
+/// A run judged against a true curve.
+fn judged(iou: f64, topology_right: bool, h: f64, warned: bool) -> Outcome {
+    let Outcome::Done(run) = done(false, 1.0, Some(0.01)) else { unreachable!() };
+    let left_out = Some(LeftOut { outliers: 4, outliers_left_out: 3, curve_points_left_out: 1 });
+    let curve = CurveScore { iou, topology_right, hausdorff_over_s: Some(h), warned, left_out };
+    Outcome::Done(Run { curve: Some(curve), ..run })
+}
+
+#[test]
+fn results_judged_against_true_curves() {
+    // Beside the sample: three outline cases, two methods and an import. sig-connect2d is
+    // good on two, wrong with a warning on one; crust good but warned on one, wrong silently
+    // on two (one an extra loop at IoU 0.99); the import fails on one and is good on two.
+    let mut data = sample();
+    data.methods.push("hull".into());
+    for (name, category) in [("a", "outline-clean"), ("b", "outline-clean"), ("c", "outline-noise")]
+    {
+        data.cases.push(case(name, category, 100, None));
+    }
+    let outcomes = [
+        (
+            "sig-connect2d",
+            [(0.99, true, 0.3, false), (0.998, true, 0.2, false), (0.5, true, 9.0, true)],
+        ),
+        (
+            "crust",
+            [(0.98, true, 0.3, true), (0.99, false, 0.4, false), (0.2, true, f64::INFINITY, false)],
+        ),
+        (
+            "hull",
+            [(0.97, true, 2.0, false), (0.96, true, 2.5, false), (f64::NAN, false, 0.0, false)],
+        ),
+    ];
+    for (method, runs) in outcomes {
+        for (k, (iou, right, h, warned)) in runs.into_iter().enumerate() {
+            let outcome = if iou.is_nan() {
+                Outcome::Failed("no result file".into())
+            } else {
+                judged(iou, right, h, warned)
+            };
+            data.entries.push(Entry { case: 6 + k, method: method.into(), outcome });
+        }
+    }
+    let (md, _, dir) = report(&data);
+    let (exact, section, paper) = (
+        md.find("## Exact reconstruction").unwrap(),
+        md.find("## Judged against the true curve").unwrap(),
+        md.find("## The paper's Table 2").unwrap(),
+    );
+    assert!(exact < section && section < paper, "the exact table first, then this");
+    let section = &md[section..paper];
+    assert!(section.contains("The 3 cases that carry their true curve"), "{section}");
+    let table = |title: &str| {
+        let start = section.find(&format!("### {title}\n")).unwrap();
+        section[start..].split("\n\n").nth(1).unwrap().to_string()
+    };
+    let good = table("Good");
+    assert!(good.starts_with("| Method | outline-clean | outline-noise |"), "{good}");
+    assert!(good.contains("| `sig-connect2d` | **100.0 % (2/2)** | 0.0 % (0/1) |"), "{good}");
+    assert!(good.contains("| `crust` | 50.0 % (1/2) | 0.0 % (0/1) |"), "{good}");
+    assert!(good.contains("| `hull` | **100.0 % (2/2)** | 0.0 % (0/1) |"), "{good}");
+    let silent = table("Silent wrong");
+    assert!(silent.contains("| `crust` | 50.0 % (1/2) | 100.0 % (1/1) |"), "{silent}");
+    assert!(silent.contains("| `hull` | **0.0 % (0/2)** | **0.0 % (0/1)** |"), "{silent}");
+    let alarms = table("Warned while good");
+    assert!(alarms.contains("| `crust` | 100.0 % (1/1) | – |"), "{alarms}");
+    let iou = table("Median IoU");
+    assert!(iou.contains("| `sig-connect2d` | **0.994** | **0.500** |"), "{iou}");
+    assert!(iou.contains("| `hull` | 0.965 | – |"), "{iou}");
+    let h = table("Median H/s");
+    assert!(h.contains("| `crust` | 0.35 | ∞ |"), "{h}");
+    let list = &section[section.find("### Silent wrong cases").unwrap()..];
+    assert!(list.contains("- `crust` (2): `b` (IoU 0.990, topology wrong, manifold), `c` (IoU"));
+    assert!(!list.contains("`sig-connect2d` (") && !list.contains("`hull` ("), "{list}");
+    // The columns in results.csv: filled for the judged runs only, read back the same.
+    let csv = fs::read_to_string(dir.path().join("out/results.csv")).unwrap();
+    assert!(csv
+        .lines()
+        .next()
+        .unwrap()
+        .ends_with(",good,silent_wrong,outliers,outliers_left_out,curve_points_left_out"));
+    assert!(csv.contains("\nb,outline-clean,100,,,crust,ok,0,manifold,"), "{csv}");
+    assert!(csv.contains(",0.99,0,0.4,0,0,1,4,3,1\n"), "{csv}");
+    assert!(csv.contains(",0.2,1,inf,0,0,1,4,3,1\n"), "{csv}");
+    assert!(csv.lines().filter(|l| l.ends_with(",,,,,,,,,")).count() == 12 + 1, "{csv}");
+    // Every judged run left out 3 of its 4 outliers and 1 curve point.
+    let outliers = table("Outliers left out");
+    assert!(outliers.contains("| `crust` | 75.0 % (6/8) | 75.0 % (3/4) |"), "{outliers}");
+    let curve_points = table("Curve points left out");
+    assert!(curve_points.contains("| `hull` | 2 in 2 case(s) | – |"), "{curve_points}");
+    assert_eq!(read_results_csv(csv.as_bytes()).unwrap().entries, data.entries);
 }

@@ -1,6 +1,6 @@
 //! `write_report`: the Markdown report, the per-case CSV and the charts of a benchmark run.
 use super::summary::{inline, table, Summary};
-use super::{charts, exact, sections};
+use super::{charts, curve, exact, sections};
 use crate::bench::record::{write_results_csv, BenchData};
 use std::fs;
 use std::io;
@@ -12,9 +12,10 @@ use std::path::{Path, PathBuf};
 /// each of the open, multiple and non-manifold categories present.
 ///
 /// The Markdown holds a header (command, data, machine, time limit, cases per category), the
-/// exact-reconstruction table in the layout of the paper's Table 2, the paper's Table 2 for
-/// reference, the distances to the ground truth, the proximity-graph statistics, the failures
-/// and links to the charts.
+/// exact-reconstruction table in the layout of the paper's Table 2, the results judged
+/// against the true curve (when some case has one), the paper's Table 2 for reference, the
+/// distances to the ground truth, the proximity-graph statistics, the failures and links to
+/// the charts.
 pub fn write_report(data: &BenchData, out_dir: &Path) -> io::Result<Vec<PathBuf>> {
     fs::create_dir_all(out_dir)?;
     let s = Summary::new(data);
@@ -35,6 +36,10 @@ pub fn write_report(data: &BenchData, out_dir: &Path) -> io::Result<Vec<PathBuf>
         md += "\n![Exact rate of the manifold cases with ε ≤ x](accuracy_eps.svg)\n";
     }
     md += "\n";
+    if let Some(section) = curve::curve_section(&s) {
+        md += &section;
+        md += "\n";
+    }
     md += &exact::paper_section(&data.methods);
     md += "\n## Runtime\n\n![Runtime against number of points, log-log](runtime.svg)\n\n";
     md += &sections::distance_section(&s);
