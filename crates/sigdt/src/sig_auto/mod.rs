@@ -29,6 +29,9 @@
 //!    the spacing and comes back to the next sample is cut out; its points are outliers.
 //!    A detour is the smaller part of its loop or path. The rest is read again; if that
 //!    gets sculpting stuck where the cut reading did not, the cut reading is kept.
+//!    **Isolated pieces** (`isolated`): fewer than seven points sampled at least four times
+//!    more coarsely than the curve beside them, which the reading reads as a loop or path
+//!    of their own or hangs onto a path's end, are cut off it as outliers.
 //! 5. **Good continuation** (`continuation`): 2-opt moves along Delaunay edges that lower
 //!    the reading's total turning while every new edge keeps `u < 2`, so that two curves
 //!    the graph merged (islands closer together than their spacing) come apart again.
@@ -77,6 +80,7 @@ mod chain_join;
 mod closed_component;
 mod coarse_reading;
 mod continuation;
+mod isolated;
 mod outliers;
 mod reading;
 mod shorter_reading;
@@ -273,6 +277,12 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
             continue;
         }
         outliers.extend(cut);
+        if steps.isolated {
+            // Small far-off pieces the reading reads as curves of their own (step 4).
+            let isolated = isolated::isolated_points(dt);
+            let cut = isolated::cut_isolated(&mut reading, |v| isolated[whole(v) as usize]);
+            outliers.extend(cut.into_iter().map(whole));
+        }
         if steps.continuation {
             continuation::continue_smoothly(&mut reading);
         }

@@ -13,6 +13,9 @@ pub struct Steps {
     pub join_ratio: f64,
     /// Leave out spanning-tree branches far from the main path (step 1).
     pub branch_outliers: bool,
+    /// Cut off the reading the small groups of points it reads apart from the curves, when
+    /// they are sampled far more sparsely than a curve beside them (`isolated`, step 4).
+    pub isolated: bool,
     /// Replace the reading by CONNECT2D's polygon when that keeps the open paths' edges and
     /// is both shorter and turns less (`shorter_reading`).
     pub shorter_reading: bool,
@@ -40,6 +43,7 @@ impl Default for Steps {
         Steps {
             join_ratio: JOIN_RATIO,
             branch_outliers: true,
+            isolated: true,
             shorter_reading: true,
             zigzag_paths: true,
             detours: true,
