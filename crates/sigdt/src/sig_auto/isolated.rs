@@ -1,5 +1,5 @@
 //! Isolated outliers: small groups of points sampled far more sparsely than the curve next
-//! to them, cut off the reading where it reads them as curves of their own.
+//! to them, left out unless the reading runs straight past them.
 //!
 //! A point's spacing is the distance to its nearest neighbour, one of its Delaunay
 //! neighbours. On a curve sampled with ρ < 1 and u < 2 ([MOW22] Theorem 1) that neighbour is
@@ -16,28 +16,30 @@
 //! coarsely than the curve beside it. A larger coarse piece is a curve; so is a small piece
 //! sampled like its surroundings (a noisy curve's fragments, a glyph's dot).
 //!
-//! Isolated points are not left out outright: a sample on a long straight side between two
-//! densely sampled bends is isolated too (such a glyph breaks u < 2, and its polygon is
-//! still what the reading finds). They are cut off the finished reading only where it reads
-//! them apart from the curves ([`cut_isolated`]): a loop or open path all of whose points
-//! are isolated, and the isolated points at the ends of an open path (a chain of outliers
-//! hung onto a curve's end).
+//! Isolated pieces are left out before the reading ([`isolated_pieces`]) and put back where
+//! the reading runs straight past them, or stops on both sides of them, along a Delaunay
+//! path ([`put_back`]): a sample on a long straight side between two densely sampled bends
+//! is isolated too (such a glyph breaks u < 2, and its polygon is still what the reading
+//! finds).
 //!
 //! Decided on squared distances of the scaled points; a spacing at exactly the bound is
 //! isolated, an edge at exactly the bound links.
 //!
 //! # Complexity
-//! O(n) time and memory beyond the triangulation, plus sorting each piece's spacings
-//! (O(n log n) in all).
+//! [`isolated_pieces`]: O(n) time and memory beyond the triangulation (a selection per
+//! piece). [`put_back`]: O(m + k · d · (d + f)) for m reading edges, k isolated points of
+//! Delaunay degree d and f reading edges that are not Delaunay edges of all points; nothing
+//! when no piece is isolated.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
-use super::reading::{Reading, NONE};
 use crate::delaunay::Triangulation;
+use crate::geometry::segments_cross;
 use crate::result::{LONG_EDGE_RATIO, MIN_LOOP_POINTS};
+use std::collections::HashMap;
 
-/// Whether each vertex of `dt` is isolated: in a small piece sampled far more coarsely than
-/// a curve beside it.
-pub(super) fn isolated_points(dt: &Triangulation) -> Vec<bool> {
+/// The isolated pieces of `dt`: fewer than [`MIN_LOOP_POINTS`] points sampled far more
+/// coarsely than a curve beside them; each ascending, the pieces by their lowest vertex.
+pub(super) fn isolated_pieces(dt: &Triangulation) -> Vec<Vec<u32>> {
     let n = dt.num_vertices();
     let neighbours = |v: u32| dt.incident(v).map(move |h| dt.other(h, v));
     let squared = |a: u32, b: u32| {
@@ -81,7 +83,7 @@ pub(super) fn isolated_points(dt: &Triangulation) -> Vec<bool> {
             *s.select_nth_unstable_by(k, f64::total_cmp).1
         })
         .collect();
-    let mut isolated = vec![false; n];
+    let mut isolated = Vec::new();
     for (id, group) in members.iter().enumerate() {
         if group.len() >= MIN_LOOP_POINTS {
             continue;
@@ -90,59 +92,185 @@ pub(super) fn isolated_points(dt: &Triangulation) -> Vec<bool> {
             let other = piece[w as usize] as usize;
             members[other].len() >= MIN_LOOP_POINTS && median[id] >= bound * median[other]
         });
-        if !beside_denser_curve {
-            continue;
-        }
-        for &v in group {
-            isolated[v as usize] = true;
+        if beside_denser_curve {
+            let mut group = group.clone();
+            group.sort_unstable();
+            isolated.push(group);
         }
     }
+    isolated.sort_unstable_by_key(|group| group[0]);
     isolated
 }
 
-/// Cuts off `reading` its loops and paths made only of `isolated` vertices and the
-/// isolated vertices at the ends of its open paths; returns the vertices cut, ascending.
-pub(super) fn cut_isolated(reading: &mut Reading<'_>, isolated: impl Fn(u32) -> bool) -> Vec<u32> {
-    let n = reading.dt.num_vertices();
-    let mut cut = Vec::new();
-    let mut seen = vec![false; n];
-    for start in 0..n as u32 {
-        if seen[start as usize] || reading.degree(start) == 0 {
-            continue;
+/// Puts back into the reading `pairs` (edges between vertices of `dt`) the isolated points
+/// that lie along one of its edges, or across the gap between two of its path ends, as a
+/// straight stretch of samples: an edge or gap `ab` such that
+/// `a`, the isolated points straight between `a` and `b` (an angle of at least 150° at each,
+/// where the sampling check's doubling back is a turn of more than 150°) in order along
+/// `ab`, and `b` are joined by Delaunay edges, go straight on at each point, and cross no
+/// edge of the reading. That is how samples on a long straight side between two densely
+/// sampled bends look (a glyph that breaks u < 2); a point off a straight or convex coast
+/// never does (the coast's edges beside it subtend less than 90° at it). Returns the points
+/// put back, ascending.
+pub(super) fn put_back(
+    dt: &Triangulation,
+    pairs: &mut Vec<[u32; 2]>,
+    pieces: &[Vec<u32>],
+) -> Vec<u32> {
+    if pieces.is_empty() {
+        return Vec::new();
+    }
+    let key = |a: u32, b: u32| [a.min(b), a.max(b)];
+    let mut index: HashMap<[u32; 2], usize> =
+        pairs.iter().enumerate().map(|(k, &[a, b])| (key(a, b), k)).collect();
+    let mut partners: HashMap<u32, Vec<u32>> = HashMap::new();
+    for &[a, b] in pairs.iter() {
+        partners.entry(a).or_default().push(b);
+        partners.entry(b).or_default().push(a);
+    }
+    // Reading edges that are not Delaunay edges of `dt` (the first round read without the
+    // pieces) are the only ones the Delaunay edges of a stretch can cross.
+    let mut foreign: Vec<[u32; 2]> =
+        pairs.iter().copied().filter(|&[a, b]| !dt.has_edge(a, b)).collect();
+    let mut waiting: Vec<u32> = pieces.concat();
+    waiting.sort_unstable();
+    let mut back = Vec::new();
+    for v in waiting.clone() {
+        if waiting.binary_search(&v).is_err() {
+            continue; // put back with an earlier point's stretch
         }
-        let mut component = vec![start];
-        seen[start as usize] = true;
-        let mut k = 0;
-        while let Some(&v) = component.get(k) {
-            for w in reading.neighbours(v) {
-                if w != NONE && !seen[w as usize] {
-                    seen[w as usize] = true;
-                    component.push(w);
+        let try_between = |a: u32, b: u32| {
+            if !straight(dt, a, v, b) {
+                return None;
+            }
+            let chain = along(dt, a, b, &stretch(dt, a, b, v, &waiting))?;
+            (!crosses(dt, &chain, &foreign, key(a, b))).then_some((a, b, chain))
+        };
+        // Into a reading edge beside `v`, or across the gap between two path ends beside
+        // `v`'s piece.
+        let into_edge = dt
+            .incident(v)
+            .map(|h| dt.other(h, v))
+            .find_map(|a| partners.get(&a)?.iter().find_map(|&b| try_between(a, b)));
+        let found = into_edge.map(|found| (found, true)).or_else(|| {
+            let piece = pieces.iter().find(|piece| piece.contains(&v))?;
+            let ends = ends_beside(dt, piece, &partners, &waiting);
+            let mut gaps = ends
+                .iter()
+                .enumerate()
+                .flat_map(|(i, &a)| ends[i + 1..].iter().map(move |&b| (a, b)));
+            gaps.find_map(|(a, b)| try_between(a, b)).map(|found| (found, false))
+        });
+        let Some(((a, b, chain), replaces)) = found else { continue };
+        let mut slot = if replaces { index.remove(&key(a, b)) } else { None };
+        for w in chain.windows(2) {
+            let edge = [w[0], w[1]];
+            match slot.take() {
+                Some(k) => {
+                    pairs[k] = edge;
+                    index.insert(key(w[0], w[1]), k);
+                }
+                None => {
+                    index.insert(key(w[0], w[1]), pairs.len());
+                    pairs.push(edge);
                 }
             }
-            k += 1;
         }
-        if component.iter().all(|&v| isolated(v)) {
-            cut.extend_from_slice(&component);
-        }
-    }
-    for path in reading.open_paths() {
-        if path.iter().all(|&v| isolated(v)) {
-            continue; // cut whole above
-        }
-        cut.extend(path.iter().take_while(|&&v| isolated(v)));
-        cut.extend(path.iter().rev().take_while(|&&v| isolated(v)));
-    }
-    for &v in &cut {
-        for w in reading.neighbours(v) {
-            if w != NONE {
-                reading.relink(w, v, NONE);
+        if replaces {
+            foreign.retain(|&[x, y]| key(x, y) != key(a, b));
+            for (x, y) in [(a, b), (b, a)] {
+                let list = partners.get_mut(&x).expect("a reading vertex");
+                list.retain(|&z| z != y);
             }
         }
-        reading.detach(v);
+        for w in chain.windows(2) {
+            partners.entry(w[0]).or_default().push(w[1]);
+            partners.entry(w[1]).or_default().push(w[0]);
+        }
+        let inner = &chain[1..chain.len() - 1];
+        waiting.retain(|u| !inner.contains(u));
+        back.extend_from_slice(inner);
     }
-    cut.sort_unstable();
-    cut
+    back.sort_unstable();
+    back
+}
+
+/// The ends of the reading's open paths (one partner) that are Delaunay neighbours of
+/// `piece` and not `waiting` themselves, ascending.
+fn ends_beside(
+    dt: &Triangulation,
+    piece: &[u32],
+    partners: &HashMap<u32, Vec<u32>>,
+    waiting: &[u32],
+) -> Vec<u32> {
+    let mut ends: Vec<u32> = piece
+        .iter()
+        .flat_map(|&v| dt.incident(v).map(move |h| dt.other(h, v)))
+        .filter(|w| waiting.binary_search(w).is_err())
+        .filter(|w| partners.get(w).is_some_and(|p| p.len() == 1))
+        .collect();
+    ends.sort_unstable();
+    ends.dedup();
+    ends
+}
+
+/// The `waiting` points straight between `a` and `b` reached from `v` along Delaunay edges
+/// between such points, `v` first.
+fn stretch(dt: &Triangulation, a: u32, b: u32, v: u32, waiting: &[u32]) -> Vec<u32> {
+    let mut found = vec![v];
+    let mut k = 0;
+    while let Some(&u) = found.get(k) {
+        for w in dt.incident(u).map(|h| dt.other(h, u)) {
+            let between = waiting.binary_search(&w).is_ok() && straight(dt, a, w, b);
+            if between && !found.contains(&w) {
+                found.push(w);
+            }
+        }
+        k += 1;
+    }
+    found
+}
+
+/// Whether the angle `x v y` is at least 150°: cos ≤ -cos 30°, a negative cosine whose
+/// square is at least 3/4.
+fn straight(dt: &Triangulation, x: u32, v: u32, y: u32) -> bool {
+    let (p, q, r) = (dt.point(x), dt.point(v), dt.point(y));
+    let (dx, dy) = ([p[0] - q[0], p[1] - q[1]], [r[0] - q[0], r[1] - q[1]]);
+    let dot = dx[0] * dy[0] + dx[1] * dy[1];
+    let (lx, ly) = (dx[0] * dx[0] + dx[1] * dx[1], dy[0] * dy[0] + dy[1] * dy[1]);
+    dot < 0.0 && dot * dot >= 0.75 * lx * ly
+}
+
+/// Whether an edge of `chain` crosses one of the `foreign` edges other than `skip` (exact).
+fn crosses(dt: &Triangulation, chain: &[u32], foreign: &[[u32; 2]], skip: [u32; 2]) -> bool {
+    chain.windows(2).any(|w| {
+        let (p, q) = (dt.point(w[0]), dt.point(w[1]));
+        foreign
+            .iter()
+            .filter(|&&[c, d]| [c.min(d), c.max(d)] != skip)
+            .any(|&[c, d]| segments_cross(p, q, dt.point(c), dt.point(d)))
+    })
+}
+
+/// `a`, the `points` ordered along `ab`, and `b`, when each step is a Delaunay edge, every
+/// point projects strictly inside `ab`, and the angle at each point is at least 150°.
+fn along(dt: &Triangulation, a: u32, b: u32, points: &[u32]) -> Option<Vec<u32>> {
+    let (pa, pb) = (dt.point(a), dt.point(b));
+    let ab = [pb[0] - pa[0], pb[1] - pa[1]];
+    let reach = ab[0] * ab[0] + ab[1] * ab[1];
+    let t = |v: u32| {
+        let p = dt.point(v);
+        (p[0] - pa[0]) * ab[0] + (p[1] - pa[1]) * ab[1]
+    };
+    let mut order = points.to_vec();
+    order.sort_by(|&x, &y| t(x).total_cmp(&t(y)).then(x.cmp(&y)));
+    if order.iter().any(|&v| !(t(v) > 0.0 && t(v) < reach)) {
+        return None;
+    }
+    let chain: Vec<u32> = [a].into_iter().chain(order).chain([b]).collect();
+    let ok = chain.windows(2).all(|w| dt.has_edge(w[0], w[1]))
+        && chain.windows(3).all(|w| straight(dt, w[0], w[1], w[2]));
+    ok.then_some(chain)
 }
 
 #[cfg(test)]
@@ -156,6 +284,21 @@ mod tests {
         (0..n).map(|k| tau * k as f64 / n as f64).map(|a| [a.cos(), a.sin()]).collect()
     }
 
+    /// The pieces of `points` as input indices.
+    fn pieces(points: &[Point]) -> Vec<Vec<usize>> {
+        let dt = Triangulation::new(points).unwrap();
+        let mut pieces: Vec<Vec<usize>> = isolated_pieces(&dt)
+            .iter()
+            .map(|piece| {
+                let mut p: Vec<usize> = piece.iter().map(|&v| dt.input_index(v)).collect();
+                p.sort_unstable();
+                p
+            })
+            .collect();
+        pieces.sort_unstable();
+        pieces
+    }
+
     #[test]
     fn scattered_points_and_small_groups_are_isolated() {
         // A 200-gon (spacing 0.031), a point inside it, two points 0.2 apart outside, and a
@@ -164,14 +307,7 @@ mod tests {
         points.push([0.5, 0.0]);
         points.extend([[2.0, 0.0], [2.0, 0.2]]);
         points.extend((0..5).map(|k| [-3.0 - k as f64, 3.0]));
-        let dt = Triangulation::new(&points).unwrap();
-        let isolated = isolated_points(&dt);
-        let mut found: Vec<usize> = (0..dt.num_vertices() as u32)
-            .filter(|&v| isolated[v as usize])
-            .map(|v| dt.input_index(v))
-            .collect();
-        found.sort_unstable();
-        assert_eq!(found, (200..208).collect::<Vec<_>>());
+        assert_eq!(pieces(&points), [vec![200], vec![201, 202], vec![203, 204, 205, 206, 207]]);
     }
 
     #[test]
@@ -186,37 +322,43 @@ mod tests {
             let r = 1.0 + 0.0628 * jitter(k);
             [-20.0 + r * x, r * y]
         }));
-        let dt = Triangulation::new(&points).unwrap();
-        assert!(!isolated_points(&dt).contains(&true));
+        assert!(pieces(&points).is_empty());
     }
 
     #[test]
-    fn the_reading_loses_its_isolated_pieces_and_ends() {
-        // Vertices 0-9 a path whose last two are isolated, 10-12 an isolated loop, 13-14 an
-        // isolated pair, 15-17 a loop with one isolated vertex (kept: it is not apart).
-        let points: Vec<Point> = (0..18).map(|k| [k as f64, (k * k % 7) as f64]).collect();
+    fn straight_sparse_stretches_are_put_back_and_outliers_are_not() {
+        // A rectangle 10 x 1 sampled every 0.1 but for its top side, where two samples
+        // divide it in three; and a point 1 below the middle of its bottom side.
+        let mut points: Vec<Point> = (0..=100).map(|k| [0.1 * k as f64, 0.0]).collect();
+        points.extend((1..10).map(|k| [10.0, 0.1 * k as f64]));
+        points.extend([[10.0, 1.0], [20.0 / 3.0, 1.0], [10.0 / 3.0, 1.0], [0.0, 1.0]]);
+        points.extend((1..10).rev().map(|k| [0.0, 0.1 * k as f64]));
+        let n = points.len();
+        points.push([5.0, -1.0]);
         let dt = Triangulation::new(&points).unwrap();
         let v = |i: usize| (0..dt.num_vertices() as u32).find(|&v| dt.input_index(v) == i).unwrap();
-        let mut pairs: Vec<[u32; 2]> = (1..10).map(|k| [v(k - 1), v(k)]).collect();
-        pairs.extend([[v(10), v(11)], [v(11), v(12)], [v(10), v(12)], [v(13), v(14)]]);
-        pairs.extend([[v(15), v(16)], [v(16), v(17)], [v(15), v(17)]]);
-        let mut reading = Reading::new(&dt, &pairs);
-        let isolated = |u: u32| matches!(dt.input_index(u), 8..=14 | 16);
-        let mut cut: Vec<usize> =
-            cut_isolated(&mut reading, isolated).into_iter().map(|u| dt.input_index(u)).collect();
-        cut.sort_unstable();
-        assert_eq!(cut, (8..15).collect::<Vec<_>>());
-        let mut left: Vec<[usize; 2]> = reading
-            .pairs()
-            .into_iter()
-            .map(|[a, b]| {
-                let (a, b) = (dt.input_index(a), dt.input_index(b));
-                [a.min(b), a.max(b)]
-            })
-            .collect();
-        left.sort_unstable();
-        let mut expected: Vec<[usize; 2]> = (1..8).map(|k| [k - 1, k]).collect();
-        expected.extend([[15, 16], [15, 17], [16, 17]]);
-        assert_eq!(left, expected);
+        let found: Vec<Vec<u32>> = isolated_pieces(&dt);
+        let (top, outlier) = (vec![v(111), v(112)], vec![v(n)]);
+        let mut top_sorted = top.clone();
+        top_sorted.sort_unstable();
+        assert!(found.contains(&top_sorted) && found.contains(&outlier), "{found:?}");
+        // The reading without them: the rectangle with its top side from 110 to 113.
+        let ring: Vec<usize> = (0..n).filter(|&i| i != 111 && i != 112).collect();
+        let mut pairs: Vec<[u32; 2]> =
+            (0..ring.len()).map(|k| [v(ring[k]), v(ring[(k + 1) % ring.len()])]).collect();
+        let mut back = put_back(&dt, &mut pairs, &[top_sorted.clone(), outlier]);
+        back.sort_unstable();
+        assert_eq!(back, top_sorted);
+        let joined = |a: u32, b: u32| pairs.contains(&[a, b]) || pairs.contains(&[b, a]);
+        assert!(joined(v(110), v(111)) && joined(v(111), v(112)) && joined(v(112), v(113)));
+        assert!(!joined(v(110), v(113)) && pairs.len() == n);
+        // A reading that left the gap open, 113 to 110 an open path: the stretch closes it.
+        let open: Vec<usize> = ring[111..].iter().chain(&ring[..111]).copied().collect();
+        let mut pairs: Vec<[u32; 2]> = open.windows(2).map(|w| [v(w[0]), v(w[1])]).collect();
+        let path = pairs.len();
+        assert_eq!(put_back(&dt, &mut pairs, &[top_sorted.clone()]), top_sorted);
+        let joined = |a: u32, b: u32| pairs.contains(&[a, b]) || pairs.contains(&[b, a]);
+        assert!(joined(v(110), v(111)) && joined(v(111), v(112)) && joined(v(112), v(113)));
+        assert_eq!(pairs.len(), path + 3);
     }
 }

@@ -30,8 +30,9 @@
 //!    A detour is the smaller part of its loop or path. The rest is read again; if that
 //!    gets sculpting stuck where the cut reading did not, the cut reading is kept.
 //!    **Isolated pieces** (`isolated`): fewer than seven points sampled at least four times
-//!    more coarsely than the curve beside them, which the reading reads as a loop or path
-//!    of their own or hangs onto a path's end, are cut off it as outliers.
+//!    more coarsely than the curve beside them are left out before the first round's
+//!    reading, and put back where the reading runs straight past them along Delaunay
+//!    edges.
 //! 5. **Good continuation** (`continuation`): 2-opt moves along Delaunay edges that lower
 //!    the reading's total turning while every new edge keeps `u < 2`, so that two curves
 //!    the graph merged (islands closer together than their spacing) come apart again.
@@ -212,6 +213,8 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     // The last round's reading with its detours cut out and their ends joined (vertices of
     // `dt`), kept in case reading the rest again gets stuck where it did not.
     let mut relinked: Option<(Vec<[u32; 2]>, Stats)> = None;
+    // The isolated pieces left out in the first round (`isolated`), vertices of `dt`.
+    let mut isolated: Vec<Vec<u32>> = Vec::new();
     for round in 0..MAX_ROUNDS {
         let subset;
         let sub = if round == 0 {
@@ -231,12 +234,15 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
                 Read { pairs: sub.line_edges().collect(), inside: Vec::new(), stats: line.stats }
             }
             None => {
+                let mut found = Vec::new();
+                if round == 0 && steps.isolated {
+                    isolated = isolated::isolated_pieces(dt);
+                    found = isolated.concat();
+                }
                 let forests = Forests::new(sub);
-                let found = if round + 1 < MAX_ROUNDS && steps.branch_outliers {
-                    branches_far_off(sub, &forests, steps)
-                } else {
-                    Vec::new()
-                };
+                if found.is_empty() && round + 1 < MAX_ROUNDS && steps.branch_outliers {
+                    found = branches_far_off(sub, &forests, steps);
+                }
                 if !found.is_empty() {
                     relinked = None;
                     outliers.extend(found.iter().map(|&v| whole(v)));
@@ -277,12 +283,6 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
             continue;
         }
         outliers.extend(cut);
-        if steps.isolated {
-            // Small far-off pieces the reading reads as curves of their own (step 4).
-            let isolated = isolated::isolated_points(dt);
-            let cut = isolated::cut_isolated(&mut reading, |v| isolated[whole(v) as usize]);
-            outliers.extend(cut.into_iter().map(whole));
-        }
         if steps.continuation {
             continuation::continue_smoothly(&mut reading);
         }
@@ -290,8 +290,10 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
             shorter_reading::prefer_shorter_reading(&mut reading);
         }
         let zigzags = reading.zigzags(MAX_SAMPLED_TURN.cos());
-        let pairs: Vec<[u32; 2]> =
+        let mut pairs: Vec<[u32; 2]> =
             reading.pairs().into_iter().map(|[a, b]| [whole(a), whole(b)]).collect();
+        let back = isolated::put_back(dt, &mut pairs, &isolated);
+        outliers.retain(|v| back.binary_search(v).is_err());
         let inside: Vec<usize> = read.inside.iter().map(|&v| dt.input_index(whole(v))).collect();
         let mut rec = finish(dt, pairs, inside, &outliers, read.stats);
         if zigzags && matches!(rec.status, Status::Polygon | Status::Polygons | Status::Curves) {

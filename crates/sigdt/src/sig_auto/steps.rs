@@ -13,8 +13,8 @@ pub struct Steps {
     pub join_ratio: f64,
     /// Leave out spanning-tree branches far from the main path (step 1).
     pub branch_outliers: bool,
-    /// Cut off the reading the small groups of points it reads apart from the curves, when
-    /// they are sampled far more sparsely than a curve beside them (`isolated`, step 4).
+    /// Leave out small groups of points sampled far more sparsely than a curve beside them,
+    /// unless the reading runs straight past them (`isolated`, step 4).
     pub isolated: bool,
     /// Replace the reading by CONNECT2D's polygon when that keeps the open paths' edges and
     /// is both shorter and turns less (`shorter_reading`).
