@@ -26,4 +26,3 @@ def test_the_folder_is_what_the_generator_writes(tmp_path):
     assert written == sorted(p.name for p in folder.iterdir() if p.name != "README.md")
     _match, mismatch, errors = filecmp.cmpfiles(tmp_path, folder, written, shallow=False)
     assert not mismatch and not errors, f"differ: {mismatch[:5]} (run make data-outlines)"
-
