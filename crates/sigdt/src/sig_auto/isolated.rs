@@ -39,6 +39,7 @@
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 use crate::delaunay::Triangulation;
 use crate::geometry::segments_cross;
+use crate::graph::UnionFind;
 use crate::result::{LONG_EDGE_RATIO, MIN_LOOP_POINTS};
 use std::collections::HashMap;
 
@@ -52,34 +53,40 @@ pub(super) fn isolated_pieces(dt: &Triangulation) -> Vec<Vec<u32>> {
         let (p, q) = (dt.point(a), dt.point(b));
         (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
     };
-    // Squared nearest-neighbour distances.
-    let spacing: Vec<f64> = (0..n as u32)
-        .map(|v| neighbours(v).map(|w| squared(v, w)).fold(f64::INFINITY, f64::min))
-        .collect();
+    // Squared nearest-neighbour distances, over every Delaunay edge once.
+    let mut spacing = vec![f64::INFINITY; n];
+    for h in dt.edge_halfedges() {
+        let (a, b) = (dt.origin(h), dt.dest(h));
+        let d = squared(a, b);
+        spacing[a as usize] = spacing[a as usize].min(d);
+        spacing[b as usize] = spacing[b as usize].min(d);
+    }
     let bound = LONG_EDGE_RATIO * LONG_EDGE_RATIO;
-    let linked =
-        |v: u32, w: u32| squared(v, w) <= bound * spacing[v as usize].min(spacing[w as usize]);
-    // Pieces: components of the linking edges, by depth-first search from the lowest
-    // vertex of each.
+    // Pieces: the components of the linking edges.
+    let mut sets = UnionFind::new(n);
+    let mut merges = 0;
+    for h in dt.edge_halfedges() {
+        let (a, b) = (dt.origin(h), dt.dest(h));
+        let linked = squared(a, b) <= bound * spacing[a as usize].min(spacing[b as usize]);
+        if linked && sets.union(a, b) {
+            merges += 1;
+        }
+    }
+    if merges + 1 >= n {
+        return Vec::new(); // one piece: nothing beside it
+    }
+    // Pieces numbered in the order of their lowest vertex.
     let mut piece = vec![u32::MAX; n];
+    let mut id_of_root: HashMap<u32, u32> = HashMap::new();
     let mut members: Vec<Vec<u32>> = Vec::new();
-    for start in 0..n as u32 {
-        if piece[start as usize] != u32::MAX {
-            continue;
-        }
-        let id = members.len() as u32;
-        piece[start as usize] = id;
-        let (mut stack, mut group) = (vec![start], Vec::new());
-        while let Some(v) = stack.pop() {
-            group.push(v);
-            for w in neighbours(v) {
-                if piece[w as usize] == u32::MAX && linked(v, w) {
-                    piece[w as usize] = id;
-                    stack.push(w);
-                }
-            }
-        }
-        members.push(group);
+    for v in 0..n as u32 {
+        let root = sets.find(v);
+        let id = *id_of_root.entry(root).or_insert_with(|| {
+            members.push(Vec::new());
+            members.len() as u32 - 1
+        });
+        piece[v as usize] = id;
+        members[id as usize].push(v);
     }
     let median: Vec<f64> = members
         .iter()
@@ -148,22 +155,13 @@ fn is_cloud(dt: &Triangulation, group: &[u32]) -> bool {
         }
     }
     edges.sort_unstable();
-    fn root(parent: &mut [usize], mut x: usize) -> usize {
-        while parent[x] != x {
-            parent[x] = parent[parent[x]];
-            x = parent[x];
-        }
-        x
-    }
-    let mut parent: Vec<usize> = (0..group.len()).collect();
+    let mut sets = UnionFind::new(group.len());
     // The shortest and longest squared tree edge at each vertex, and how many.
     let mut at = vec![(f64::INFINITY, 0.0f64, 0usize); group.len()];
     for (bits, _, _, k, j) in edges {
-        let (rk, rj) = (root(&mut parent, k), root(&mut parent, j));
-        if rk == rj {
+        if !sets.union(k as u32, j as u32) {
             continue;
         }
-        parent[rk] = rj;
         let length = f64::from_bits(bits);
         for x in [k, j] {
             let (short, long, count) = &mut at[x];
