@@ -91,7 +91,9 @@ class GraphOverlap(TypedDict):
 
 
 #: What the sampling check can find (the ``kind`` of a finding).
-FindingKind = Literal["passes-over-samples", "doubles-back", "small-loops", "open-ends"]
+FindingKind = Literal[
+    "passes-over-samples", "doubles-back", "small-loops", "open-ends", "outliers-on-curve"
+]
 
 
 class Finding(TypedDict):
@@ -102,10 +104,13 @@ class Finding(TypedDict):
     least 2 point spacings deep), ``"doubles-back"`` (the curve turns by more than 150
     degrees between two edges each at least 4 times the spacing at its far end) or
     ``"small-loops"`` (loops of fewer than seven points, which no closed curve sampled within
-    the condition gives) or ``"open-ends"`` (an open path ends next to points nearer than
-    half its last edge: the curve may go on there); ``count`` edges, points or loops show it; ``worst`` is the deepest
-    reach in point spacings, the sharpest turn in degrees or the size of the smallest loop,
-    at input index ``at``; ``message`` is the sentence front ends print."""
+    the condition gives), ``"open-ends"`` (an open path ends next to points nearer than
+    half its last edge: the curve may go on there) or ``"outliers-on-curve"`` (points left
+    out as outliers lie within half their spacing of an edge of the result); ``count``
+    edges, points or loops show it; ``worst`` is the deepest reach in point spacings, the
+    sharpest turn in degrees, the size of the smallest loop, the last edge over the nearest
+    distance or the nearest outlier's distance over its spacing, at input index ``at``;
+    ``message`` is the sentence front ends print."""
 
     kind: FindingKind
     count: int

@@ -31,6 +31,11 @@
 //!    points it could go on through: a curve broken in two, or closed curve read open.
 //!    Finding [`FindingKind::OpenEnds`].
 //!
+//! 5. **An outlier lies off the curves**: a sample lies on its curve, so a point left out as
+//!    an outlier within half its own spacing of an edge of the result is a sample the
+//!    reading passed by and dropped (where curves come closer than their spacing, ρ ≥ 1),
+//!    not an outlier. Finding [`FindingKind::OutliersOnCurve`].
+//!
 //! Long straight sides between dense corners (glyphs, buildings) break u < 2 without being
 //! wrong; their disks are empty, so neither finding fires on them.
 //!
@@ -45,7 +50,7 @@
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 use crate::delaunay::Triangulation;
-use crate::geometry::distance;
+use crate::geometry::{distance, segment_distance};
 
 /// How far (in point spacings `max(r(a), r(b))`) a sample may reach into the disk with
 /// diameter `ab` before `ab` is reported: twice, the most that a sampling with u < 2 allows
@@ -70,10 +75,13 @@ const DOUBLING_BACK_COS: f64 = -0.866_025_403_784_438_6;
 pub struct Finding {
     /// What kind of violation.
     pub kind: FindingKind,
-    /// How many edges (passing over samples), vertices (doubling back) or loops show it.
+    /// How many edges (passing over samples), vertices (doubling back), loops, open ends
+    /// or outliers show it.
     pub count: usize,
     /// The worst value: how deep a sample reaches into an edge's disk, in point spacings,
-    /// the sharpest turn in degrees, or the number of points of the smallest small loop.
+    /// the sharpest turn in degrees, the number of points of the smallest small loop, an
+    /// open end's last edge over its nearest distance, or the nearest outlier's distance to
+    /// an edge over its spacing.
     pub worst: f64,
     /// Input index of a point where the worst value is (an end of the edge, or the vertex
     /// that turns).
@@ -95,17 +103,20 @@ pub enum FindingKind {
     SmallLoops,
     /// Ends of open paths with another point nearer than half their last edge.
     OpenEnds,
+    /// Points left out as outliers within half their spacing of an edge of the result.
+    OutliersOnCurve,
 }
 
 impl FindingKind {
-    /// The kebab-case name: `passes-over-samples`, `doubles-back`, `small-loops` or
-    /// `open-ends`.
+    /// The kebab-case name: `passes-over-samples`, `doubles-back`, `small-loops`,
+    /// `open-ends` or `outliers-on-curve`.
     pub fn name(self) -> &'static str {
         match self {
             FindingKind::PassesOverSamples => "passes-over-samples",
             FindingKind::DoublesBack => "doubles-back",
             FindingKind::SmallLoops => "small-loops",
             FindingKind::OpenEnds => "open-ends",
+            FindingKind::OutliersOnCurve => "outliers-on-curve",
         }
     }
 }
@@ -135,6 +146,12 @@ impl std::fmt::Display for Finding {
                 f,
                 "{} open end(s) stop next to other points (worst at point {}: its last edge is \
                  {:.1}x the distance to its nearest point; the curve may go on there)",
+                self.count, self.at, self.worst
+            ),
+            FindingKind::OutliersOnCurve => write!(
+                f,
+                "{} point(s) left out as outliers lie on the curves (worst at point {}, {:.2} \
+                 of its point spacing from an edge; an outlier lies off them)",
                 self.count, self.at, self.worst
             ),
         }
@@ -319,7 +336,55 @@ pub(crate) fn diagnose(dt: &Triangulation, rec: &super::Reconstruction) -> Vec<F
     let loops = rec.loops.iter().map(|l| (as_vertices(l), true));
     let curves: Vec<(Vec<u32>, bool)> =
         loops.chain(rec.paths.iter().map(|p| (as_vertices(p), false))).collect();
-    check_curves(dt, curves.iter().map(|(c, closed)| (c.as_slice(), *closed)))
+    let mut found = check_curves(dt, curves.iter().map(|(c, closed)| (c.as_slice(), *closed)));
+    let outliers: Vec<u32> = rec
+        .left_out
+        .iter()
+        .filter(|l| l.reason == super::LeftOutReason::Outlier)
+        .map(|l| vertex_of[l.index])
+        .collect();
+    if !outliers.is_empty() {
+        let on_curve = outliers_on_curve(dt, &outliers, &curves);
+        if on_curve.count > 0 {
+            found.push(on_curve.finding());
+        }
+    }
+    found
+}
+
+/// The `outliers` (vertices of `dt`) within half their spacing of an edge of `curves`
+/// (property 5); the worst is the nearest, as a fraction of its spacing.
+fn outliers_on_curve(dt: &Triangulation, outliers: &[u32], curves: &[(Vec<u32>, bool)]) -> Tally {
+    // The result's neighbours of each vertex.
+    let mut next = vec![[u32::MAX; 2]; dt.num_vertices()];
+    for (curve, closed) in curves {
+        let n = curve.len();
+        let edges = if *closed && n >= 3 { n } else { n.saturating_sub(1) };
+        for k in 0..edges {
+            let (a, b) = (curve[k], curve[(k + 1) % n]);
+            for (x, y) in [(a, b), (b, a)] {
+                let slots = &mut next[x as usize];
+                let free = usize::from(slots[0] != u32::MAX);
+                slots[free.min(1)] = y;
+            }
+        }
+    }
+    let mut tally = Tally::new(FindingKind::OutliersOnCurve);
+    for &v in outliers {
+        let (p, spacing) = (dt.point(v), nearest_distance(dt, v));
+        let nearest_edge = dt
+            .incident(v)
+            .map(|h| dt.other(h, v))
+            .flat_map(|w| next[w as usize].into_iter().map(move |u| (w, u)))
+            .filter(|&(_, u)| u != u32::MAX)
+            .map(|(w, u)| segment_distance(p, dt.point(w), dt.point(u)))
+            .fold(f64::INFINITY, f64::min);
+        if nearest_edge < 0.5 * spacing {
+            // Negated, so that the nearest is the worst.
+            tally.add(-(nearest_edge / spacing), dt.input_index(v));
+        }
+    }
+    tally
 }
 
 /// Counts one kind of finding and keeps its worst value, at the smallest input index among
@@ -344,8 +409,10 @@ impl Tally {
     }
 
     fn finding(&self) -> Finding {
-        // Small loops keep the negated size, so that the smallest is the worst.
-        let worst = if self.kind == FindingKind::SmallLoops { -self.worst } else { self.worst };
+        // Small loops keep the negated size, outliers on curves the negated distance, so
+        // that the smallest is the worst.
+        let negated = matches!(self.kind, FindingKind::SmallLoops | FindingKind::OutliersOnCurve);
+        let worst = if negated { -self.worst } else { self.worst };
         Finding { kind: self.kind, count: self.count, worst, at: self.at }
     }
 }
@@ -400,6 +467,33 @@ mod tests {
         let order: Vec<usize> = order.into_iter().rev().collect();
         let found = findings(&points, vec![order]);
         assert!(found.iter().all(|f| f.kind != FindingKind::PassesOverSamples), "{found:?}");
+    }
+
+    #[test]
+    fn outliers_on_the_curve_are_found_and_outliers_off_it_are_not() {
+        // A 60-gon read without sample 7 (its neighbours joined), and a point 3 off the
+        // circle: both left out as outliers. Sample 7 lies 0.005 from the chord 6-8, a
+        // sixtieth of its spacing 0.105; the far point is 2 from every edge.
+        use crate::result::{LeftOut, LeftOutReason};
+        let mut points = circle(60);
+        points.push([3.0, 0.0]);
+        let order: Vec<usize> = (0..60).filter(|&i| i != 7).collect();
+        let dt = Triangulation::new(&points).unwrap();
+        let outlier = |index| LeftOut { index, reason: LeftOutReason::Outlier };
+        let rec = |left_out| Reconstruction {
+            loops: vec![order.clone()],
+            left_out,
+            ..Reconstruction::default()
+        };
+        let found = diagnose(&dt, &rec(vec![outlier(7), outlier(60)]));
+        let on_curve: Vec<&Finding> =
+            found.iter().filter(|f| f.kind == FindingKind::OutliersOnCurve).collect();
+        assert_eq!(on_curve.len(), 1, "{found:?}");
+        assert_eq!((on_curve[0].count, on_curve[0].at), (1, 7));
+        assert!(on_curve[0].worst < 0.1, "{found:?}");
+        assert!(on_curve[0].to_string().contains("1 point(s) left out as outliers lie on the"));
+        let found = diagnose(&dt, &rec(vec![outlier(60)]));
+        assert!(found.iter().all(|f| f.kind != FindingKind::OutliersOnCurve), "{found:?}");
     }
 
     #[test]

@@ -77,7 +77,7 @@ pub(super) fn coarse_reading(dt: &Triangulation, steps: &Steps) -> Option<FineRe
         let Ok(sub) = Triangulation::new(&points) else { continue };
         let coarse = sig_auto_with(&sub, &inner);
         if !matches!(coarse.status, Status::Polygon | Status::Polygons)
-            || !coarse.diagnosis.is_empty()
+            || super::curves_fail(&coarse.diagnosis)
             || coarse.loops.is_empty()
         {
             continue;

@@ -138,7 +138,7 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     }
     // The zigzag test alone (status `noisy`) does not call for another reading: it also
     // fires on exact readings of jagged polygons given by their vertices.
-    let broken = !rec.diagnosis.is_empty() || matches!(rec.status, Status::SculptingStuck { .. });
+    let broken = curves_fail(&rec.diagnosis) || matches!(rec.status, Status::SculptingStuck { .. });
     if !(steps.coarse && broken) {
         return rec;
     }
@@ -156,6 +156,13 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
         }
         None => rec,
     }
+}
+
+/// Whether `findings` say the reading's curves break the sampling condition: any finding
+/// but outliers on the curves, where the curves passed and a point beside them was dropped
+/// (the coarse reading threads every point back in anyway).
+fn curves_fail(findings: &[crate::result::Finding]) -> bool {
+    findings.iter().any(|f| f.kind != FindingKind::OutliersOnCurve)
 }
 
 /// `rec` with the points where it doubles back left out as outliers (`wired_outliers`),
