@@ -29,10 +29,10 @@
 //!    the spacing and comes back to the next sample is cut out; its points are outliers.
 //!    A detour is the smaller part of its loop or path. The rest is read again; if that
 //!    gets sculpting stuck where the cut reading did not, the cut reading is kept.
-//!    **Isolated pieces** (`isolated`): fewer than seven points sampled at least four times
-//!    more coarsely than the curve beside them are left out before the first round's
-//!    reading, and put back where the reading runs straight past them along Delaunay
-//!    edges.
+//!    **Isolated pieces** (`isolated`): fewer than seven points, or a scattered cloud of a
+//!    few percent of the points, sampled at least four times more coarsely than the curve
+//!    beside them, are left out before the first round's reading, and put back where the
+//!    reading runs straight past them, or stops on both sides, along Delaunay edges.
 //! 5. **Good continuation** (`continuation`): 2-opt moves along Delaunay edges that lower
 //!    the reading's total turning while every new edge keeps `u < 2`, so that two curves
 //!    the graph merged (islands closer together than their spacing) come apart again.
@@ -246,9 +246,12 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
                     isolated = isolated::isolated_pieces(dt);
                     found = isolated.concat();
                 }
-                let forests = Forests::new(sub);
-                if found.is_empty() && round + 1 < MAX_ROUNDS && steps.branch_outliers {
-                    found = branches_far_off(sub, &forests, steps);
+                // Built only when there is no isolated piece to leave out first.
+                let forests = found.is_empty().then(|| Forests::new(sub));
+                if let Some(forests) = &forests {
+                    if round + 1 < MAX_ROUNDS && steps.branch_outliers {
+                        found = branches_far_off(sub, forests, steps);
+                    }
                 }
                 if !found.is_empty() {
                     relinked = None;
@@ -258,6 +261,7 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
                     kept.retain(|v| !gone.contains(v));
                     continue;
                 }
+                let Some(forests) = forests else { unreachable!("built when nothing was found") };
                 read_components(sub, &forests, steps)
             }
         };
