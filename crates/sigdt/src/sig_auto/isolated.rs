@@ -15,8 +15,8 @@
 //! least [`MIN_LOOP_POINTS`] points it shares a Delaunay edge with: sampled far more
 //! coarsely than the curve beside it. So is a larger such piece of at most a twentieth of
 //! the points of that curve that is a *cloud*: along its minimum spanning tree (which runs
-//! along a sampled curve) u < 2 fails at more than one vertex in eight, where scattered
-//! points break it at a quarter or more and islands hardly ever ([`is_cloud`]). A larger
+//! along a sampled curve) u < 2 fails at more than one vertex in eight, which scattered
+//! points do and islands hardly ever ([`is_cloud`]). A larger
 //! coarse piece that keeps u < 2, or holds more points, is a curve (an island sampled more
 //! coarsely than the coast beside it, a polygon given by its vertices); so is a small piece
 //! sampled like its surroundings (a noisy curve's fragments, a glyph's dot).
@@ -112,19 +112,15 @@ pub(super) fn isolated_pieces(dt: &Triangulation) -> Vec<Vec<u32>> {
                         && *cloud.get_or_insert_with(|| is_cloud(dt, group))))
         });
         if beside_denser_curve {
-            let mut group = group.clone();
-            group.sort_unstable();
-            isolated.push(group);
+            isolated.push(group.clone()); // ascending, as the pieces are
         }
     }
-    isolated.sort_unstable_by_key(|group| group[0]);
     isolated
 }
 
 /// The share of a piece's tree vertices at which u ≥ 2 beyond which the piece is a cloud
-/// of scattered points rather than a sampled curve. Measured on `data/real` and
-/// `data/outlines` (`docs/sig-auto.md`, step 6): coarse islands break u < 2 at no more than
-/// 3 % of their tree vertices, clouds of outliers at 25–40 %; one in eight lies between.
+/// of scattered points rather than a sampled curve: between what coarse islands and clouds
+/// of outliers measure (`docs/sig-auto.md`, step 6).
 const CLOUD_SHARE: f64 = 0.125;
 
 /// A cloud is left out only beside a curve of at least this many times its points:
@@ -176,11 +172,11 @@ fn is_cloud(dt: &Triangulation, group: &[u32]) -> bool {
 
 /// Puts back into the reading `pairs` (edges between vertices of `dt`) the isolated points
 /// that lie along one of its edges, or across the gap between two of its path ends, as a
-/// straight stretch of samples: an edge or gap `ab` such that
-/// `a`, the isolated points straight between `a` and `b` (an angle of at least 150° at each,
-/// where the sampling check's doubling back is a turn of more than 150°) in order along
-/// `ab`, and `b` are joined by Delaunay edges, go straight on at each point, and cross no
-/// edge of the reading. That is how samples on a long straight side between two densely
+/// straight stretch of samples: an edge or gap `ab` such that `a`, the isolated points
+/// straight between `a` and `b` (an angle of at least 150° at each, where the sampling
+/// check's doubling back is a turn of more than 150°) in order along `ab`, and `b` are
+/// joined by Delaunay edges, go straight on at each point, and cross no edge of the
+/// reading. That is how samples on a long straight side between two densely
 /// sampled bends look (a glyph that breaks u < 2); a point off a straight or convex coast
 /// never does (the coast's edges beside it subtend less than 90° at it). Returns the points
 /// put back, ascending.
@@ -206,6 +202,8 @@ pub(super) fn put_back(
         pairs.iter().copied().filter(|&[a, b]| !dt.has_edge(a, b)).collect();
     let mut waiting: Vec<u32> = pieces.concat();
     waiting.sort_unstable();
+    let piece_of: HashMap<u32, usize> =
+        pieces.iter().enumerate().flat_map(|(k, p)| p.iter().map(move |&v| (v, k))).collect();
     let mut back = Vec::new();
     for v in waiting.clone() {
         if waiting.binary_search(&v).is_err() {
@@ -225,7 +223,7 @@ pub(super) fn put_back(
             .map(|h| dt.other(h, v))
             .find_map(|a| partners.get(&a)?.iter().find_map(|&b| try_between(a, b)));
         let found = into_edge.map(|found| (found, true)).or_else(|| {
-            let piece = pieces.iter().find(|piece| piece.contains(&v))?;
+            let piece = &pieces[*piece_of.get(&v)?];
             let ends = ends_beside(dt, piece, &partners, &waiting);
             let mut gaps = ends
                 .iter()
