@@ -46,7 +46,8 @@
 //! # Complexity
 //! O(k · d) for a result with k vertices of mean Delaunay degree d on readings whose edges
 //! are about the point spacing; an edge that passes over samples costs a walk of at most
-//! [`MAX_WALK`] steps towards its midpoint. No allocation beyond the findings.
+//! [`MAX_WALK`] steps towards its midpoint. No allocation beyond the findings, but for
+//! O(n) neighbour slots when the result left points out as outliers (property 5).
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 use crate::delaunay::Triangulation;
