@@ -27,8 +27,8 @@
 //! is isolated too (such a glyph breaks u < 2, and its polygon is still what the reading
 //! finds).
 //!
-//! Decided on squared distances of the scaled points; a spacing at exactly the bound is
-//! isolated, an edge at exactly the bound links.
+//! Decided on distances of the scaled points; a spacing at exactly the bound is isolated,
+//! an edge at exactly the bound links.
 //!
 //! # Complexity
 //! [`isolated_pieces`]: O(n) time and memory beyond the triangulation (a selection per
@@ -38,8 +38,9 @@
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 use crate::delaunay::Triangulation;
-use crate::geometry::segments_cross;
+use crate::geometry::{distance, segments_cross};
 use crate::graph::UnionFind;
+use crate::proximity::nearest::nearest_vertex_distances;
 use crate::result::{LONG_EDGE_RATIO, MIN_LOOP_POINTS};
 use std::collections::HashMap;
 
@@ -49,25 +50,14 @@ use std::collections::HashMap;
 pub(super) fn isolated_pieces(dt: &Triangulation) -> Vec<Vec<u32>> {
     let n = dt.num_vertices();
     let neighbours = |v: u32| dt.incident(v).map(move |h| dt.other(h, v));
-    let squared = |a: u32, b: u32| {
-        let (p, q) = (dt.point(a), dt.point(b));
-        (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)
-    };
-    // Squared nearest-neighbour distances, over every Delaunay edge once.
-    let mut spacing = vec![f64::INFINITY; n];
-    for h in dt.edge_halfedges() {
-        let (a, b) = (dt.origin(h), dt.dest(h));
-        let d = squared(a, b);
-        spacing[a as usize] = spacing[a as usize].min(d);
-        spacing[b as usize] = spacing[b as usize].min(d);
-    }
-    let bound = LONG_EDGE_RATIO * LONG_EDGE_RATIO;
+    let length = |a: u32, b: u32| distance(dt.point(a), dt.point(b));
+    let spacing = nearest_vertex_distances(dt);
     // Pieces: the components of the linking edges.
     let mut sets = UnionFind::new(n);
     let mut merges = 0;
     for h in dt.edge_halfedges() {
         let (a, b) = (dt.origin(h), dt.dest(h));
-        let linked = squared(a, b) <= bound * spacing[a as usize].min(spacing[b as usize]);
+        let linked = length(a, b) <= LONG_EDGE_RATIO * spacing[a as usize].min(spacing[b as usize]);
         if linked && sets.union(a, b) {
             merges += 1;
         }
@@ -104,8 +94,8 @@ pub(super) fn isolated_pieces(dt: &Triangulation) -> Vec<Vec<u32>> {
         let mut cloud = None;
         let beside_denser_curve = group.iter().flat_map(|&v| neighbours(v)).any(|w| {
             let other = piece[w as usize] as usize;
-            let denser =
-                members[other].len() >= MIN_LOOP_POINTS && median[id] >= bound * median[other];
+            let denser = members[other].len() >= MIN_LOOP_POINTS
+                && median[id] >= LONG_EDGE_RATIO * median[other];
             denser
                 && (small
                     || (group.len() * CLOUD_FRACTION <= members[other].len()
