@@ -103,18 +103,27 @@ fn write_atomically(
     write: impl FnOnce(&mut dyn Write) -> io::Result<()>,
 ) -> Result<()> {
     let shown = path.display();
-    let mut builder = tempfile::Builder::new();
-    builder.prefix(".sigdt-").suffix(".tmp");
-    #[cfg(unix)]
-    {
-        // What a plain create would give (0o666 less the umask), not tempfile's 0o600.
-        use std::os::unix::fs::PermissionsExt;
-        builder.permissions(fs::Permissions::from_mode(0o666));
-    }
-    let mut tmp = builder.tempfile_in(dir).map_err(|e| {
-        anyhow!("{shown}: cannot create a temporary file in '{}': {e}", dir.display())
-    })?;
-    let _pending = Pending::new(tmp.path());
+    // The file is created and listed as pending under one lock, which the signal handler
+    // holds until the process exits: a signal never falls between the two.
+    let create = |candidate: &Path| {
+        let mut pending = lock_pending();
+        let mut options = fs::OpenOptions::new();
+        options.write(true).create_new(true);
+        #[cfg(unix)]
+        {
+            // What a plain create would give (0o666 less the umask).
+            use std::os::unix::fs::OpenOptionsExt;
+            options.mode(0o666);
+        }
+        let file = options.open(candidate)?;
+        pending.push(candidate.to_path_buf());
+        Ok(file)
+    };
+    let mut tmp =
+        tempfile::Builder::new().prefix(".sigdt-").suffix(".tmp").make_in(dir, create).map_err(
+            |e| anyhow!("{shown}: cannot create a temporary file in '{}': {e}", dir.display()),
+        )?;
+    let _pending = Pending(tmp.path().to_path_buf());
     if let Ok(meta) = fs::metadata(path) {
         // Replacing an existing file keeps its permissions.
         let _ = tmp.as_file().set_permissions(meta.permissions());
@@ -159,15 +168,8 @@ fn writable(path: &Path, meta: &fs::Metadata) -> bool {
 /// process is told to stop midway.
 static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
-/// A temporary file listed in [`PENDING`] while it lives.
+/// A temporary file listed in [`PENDING`] (when it was created), unlisted when dropped.
 struct Pending(PathBuf);
-
-impl Pending {
-    fn new(path: &Path) -> Pending {
-        lock_pending().push(path.to_path_buf());
-        Pending(path.to_path_buf())
-    }
-}
 
 impl Drop for Pending {
     fn drop(&mut self) {
@@ -185,7 +187,9 @@ fn lock_pending() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
 pub fn remove_pending_on_signals() {
     // Installing fails only if a handler exists already; the default behaviour then stays.
     let _ = ctrlc::set_handler(|| {
-        for path in lock_pending().iter() {
+        // Held until the exit, so that no new temporary file appears after the removal.
+        let pending = lock_pending();
+        for path in pending.iter() {
             let _ = fs::remove_file(path);
         }
         std::process::exit(130);
