@@ -92,7 +92,12 @@ class GraphOverlap(TypedDict):
 
 #: What the sampling check can find (the ``kind`` of a finding).
 FindingKind = Literal[
-    "passes-over-samples", "doubles-back", "small-loops", "open-ends", "outliers-on-curve"
+    "passes-over-samples",
+    "doubles-back",
+    "small-loops",
+    "open-ends",
+    "outliers-on-curve",
+    "noisy-area",
 ]
 
 
@@ -101,15 +106,19 @@ class Finding(TypedDict):
     result breaks the sampling condition it assumes.
 
     ``kind`` is ``"passes-over-samples"`` (edges whose diametral disk holds another point at
-    least 2 point spacings deep), ``"doubles-back"`` (the curve turns by more than 150
+    least 1 point spacing deep, or 2 for the curve's next point beyond an end), ``"doubles-back"`` (the curve turns by more than 150
     degrees between two edges each at least 4 times the spacing at its far end) or
     ``"small-loops"`` (loops of fewer than seven points, which no closed curve sampled within
     the condition gives), ``"open-ends"`` (an open path ends next to points nearer than
-    half its last edge: the curve may go on there) or ``"outliers-on-curve"`` (points left
-    out as outliers lie within half their spacing of an edge of the result); ``count``
-    edges, points or loops show it; ``worst`` is the deepest reach in point spacings, the
-    sharpest turn in degrees, the size of the smallest loop, the last edge over the nearest
-    distance or the nearest outlier's distance over its spacing, at input index ``at``;
+    half its last edge: the curve may go on there), ``"outliers-on-curve"`` (points left
+    out as outliers lie within half their spacing of an edge of the result, or nearer to
+    one of its vertices than half that vertex's longer edge) or
+    ``"noisy-area"`` (the loops' turns reverse at most points, as noise makes them, by
+    enough to make the area they enclose uncertain by more than 5 %); ``count`` edges,
+    points or loops show it; ``worst`` is the deepest reach in point spacings, the sharpest
+    turn in degrees, the size of the smallest loop, the last edge over the nearest
+    distance, the nearest outlier's distance over its spacing or the uncertain share of
+    the area, at input index ``at``;
     ``message`` is the sentence front ends print."""
 
     kind: FindingKind

@@ -126,6 +126,19 @@ def test_a_result_that_breaks_the_sampling_condition_warns_with_its_findings():
     assert properties["warning"] is True and properties["diagnosis"] == rec.diagnosis
 
 
+def test_noise_that_moves_the_area_warns_with_how_much():
+    # 40 samples of the unit circle moved across it by half their spacing: the loop keeps
+    # its order, but the strip of noise along it is a tenth of the area.
+    rng = np.random.default_rng(7)
+    angle = 2 * np.pi * np.arange(40) / 40
+    radius = 1 + 0.5 * (2 * np.pi / 40) * rng.standard_normal(40)
+    points = np.c_[radius * np.cos(angle), radius * np.sin(angle)]
+    with pytest.warns(sigdt.SigdtWarning, match=r"scatter like noise.* uncertain by about"):
+        rec = sigdt.reconstruct(points, method="sig-auto")
+    [finding] = [f for f in rec.diagnosis if f["kind"] == "noisy-area"]
+    assert finding["count"] == 1 and 0.05 < finding["worst"] < 0.3
+
+
 def test_a_faithful_result_has_an_empty_diagnosis():
     rec = sigdt.reconstruct(circle())
     assert rec.diagnosis == [] and not rec.warns

@@ -50,7 +50,7 @@ pub use method::{
 pub use proximity::{nearest_neighbour_distances, proximity_graph, proximity_graph_on, GraphKind};
 pub use result::{
     Finding, FindingKind, LeftOut, LeftOutReason, Polygon, Reconstruction, Stats, Status, Vertices,
-    DEPTH_RATIO, LONG_EDGE_RATIO, MIN_LOOP_POINTS,
+    AREA_TOLERANCE, DEPTH_RATIO, LONG_EDGE_RATIO, MIN_LOOP_POINTS, STRAY_DEPTH_RATIO,
 };
 
 /// The README's examples, compiled and run as doctests.

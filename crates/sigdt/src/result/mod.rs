@@ -4,16 +4,21 @@
 
 mod degenerate;
 mod from_edges;
+mod noisy_area;
 mod polygons;
 mod sampling_check;
 
 pub(crate) use degenerate::degenerate_result;
 pub(crate) use from_edges::{from_new_vertices, from_vertex_pairs};
+pub(crate) use noisy_area::noisy_area;
+pub use noisy_area::AREA_TOLERANCE;
 pub use polygons::Polygon;
 pub(crate) use sampling_check::{check_curves, diagnose, doubling_back};
 #[doc(hidden)]
 pub use sampling_check::{measure_curve, EdgeMeasure};
-pub use sampling_check::{Finding, FindingKind, DEPTH_RATIO, LONG_EDGE_RATIO, MIN_LOOP_POINTS};
+pub use sampling_check::{
+    Finding, FindingKind, DEPTH_RATIO, LONG_EDGE_RATIO, MIN_LOOP_POINTS, STRAY_DEPTH_RATIO,
+};
 
 /// The [`LeftOut`] entries of points left inside when sculpting got stuck (input indices,
 /// sorted).

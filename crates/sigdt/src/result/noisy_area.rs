@@ -65,18 +65,27 @@ struct LoopNoise {
 /// The finding of this module on the closed `rings` of a result (vertices of `dt` in
 /// order), if any; `at` in input indices.
 pub(crate) fn noisy_area(dt: &Triangulation, rings: &[&[u32]]) -> Option<Finding> {
-    let loops: Vec<&[u32]> = rings.iter().copied().filter(|r| r.len() >= MIN_LOOP_POINTS).collect();
-    // The reversals first: they end the check on sampled curves without allocating.
-    let reversals: Vec<usize> = loops.iter().map(|l| reversals(dt, l)).collect();
-    let vertices: usize = loops.iter().map(|l| l.len()).sum();
-    if 2 * reversals.iter().sum::<usize>() <= vertices {
+    // The reversals first: they end the check on sampled curves without allocating (their
+    // count does not depend on where a loop starts or which way it runs).
+    let large = || rings.iter().filter(|r| r.len() >= MIN_LOOP_POINTS);
+    let vertices: usize = large().map(|l| l.len()).sum();
+    if 2 * large().map(|l| reversals(dt, l)).sum::<usize>() <= vertices {
         return None;
     }
+    // The sums below, in an order that depends only on the loops, not on how a method
+    // numbered them: the same finding from every path to the same result.
+    let mut rings: Vec<Vec<u32>> =
+        rings.iter().filter(|r| r.len() >= 3).map(|r| canonical(dt, r)).collect();
+    rings.sort_unstable_by_key(|r| dt.input_index(r[0]));
+    let loops: Vec<&[u32]> =
+        rings.iter().filter(|r| r.len() >= MIN_LOOP_POINTS).map(Vec::as_slice).collect();
+    let reversals: Vec<usize> = loops.iter().map(|l| reversals(dt, l)).collect();
     let mut jumps = Vec::new();
     let estimates: Vec<LoopNoise> = loops.iter().map(|l| loop_noise(dt, l, &mut jumps)).collect();
     let expected = AREA_PER_LENGTH * estimates.iter().map(|m| m.sigma_length).sum::<f64>();
-    let area = enclosed_area(dt, rings);
-    if !(expected > AREA_TOLERANCE * (area + 0.5 * expected)) {
+    let area = enclosed_area(dt, &rings);
+    let tolerated = AREA_TOLERANCE * (area + 0.5 * expected);
+    if expected.partial_cmp(&tolerated) != Some(std::cmp::Ordering::Greater) {
         return None;
     }
     // The loops that look noisy themselves; the worst is the one with most area in doubt.
@@ -92,6 +101,17 @@ pub(crate) fn noisy_area(dt: &Triangulation, rings: &[&[u32]]) -> Option<Finding
         worst: share,
         at: dt.input_index(worst.worst_vertex),
     })
+}
+
+/// `ring` rotated to start at its smallest input index and turned to run on towards the
+/// smaller of that vertex's two neighbours.
+fn canonical(dt: &Triangulation, ring: &[u32]) -> Vec<u32> {
+    let n = ring.len();
+    let input = |k: usize| dt.input_index(ring[k % n]);
+    let start = (0..n).min_by_key(|&k| input(k)).unwrap_or(0);
+    let forwards = input(start + 1) < input(start + n - 1);
+    let at = |k: usize| if forwards { ring[(start + k) % n] } else { ring[(start + n - k) % n] };
+    (0..n).map(at).collect()
 }
 
 /// How many vertices of the closed `ring` turn the other way than the vertex before them
@@ -129,15 +149,15 @@ fn loop_noise(dt: &Triangulation, ring: &[u32], jumps: &mut Vec<f64>) -> LoopNoi
     let (mut worst_jump, mut worst_vertex) = (f64::NEG_INFINITY, ring[0]);
     let mut length = 0.0;
     let (mut before, mut here) = (bend(n - 1), bend(0));
-    for k in 0..n {
+    for (k, &vertex) in ring.iter().enumerate() {
         let after = bend(k + 1);
         let (curvature, uv, vw) = here;
         let jump = ((curvature - 0.5 * (before.0 + after.0)) * uv * vw * 0.5).abs();
         let jump = if jump.is_finite() { jump } else { f64::MAX };
         let better = jump > worst_jump
-            || (jump == worst_jump && dt.input_index(ring[k]) < dt.input_index(worst_vertex));
+            || (jump == worst_jump && dt.input_index(vertex) < dt.input_index(worst_vertex));
         if better {
-            (worst_jump, worst_vertex) = (jump, ring[k]);
+            (worst_jump, worst_vertex) = (jump, vertex);
         }
         jumps.push(jump);
         length += vw;
@@ -150,7 +170,7 @@ fn loop_noise(dt: &Triangulation, ring: &[u32], jumps: &mut Vec<f64>) -> LoopNoi
 /// The area each of the `rings` encloses, summed (a hole counts as its own loop's area, so
 /// that no nesting is needed: the share of the area in doubt is then a lower bound of the
 /// region's).
-fn enclosed_area(dt: &Triangulation, rings: &[&[u32]]) -> f64 {
+fn enclosed_area(dt: &Triangulation, rings: &[Vec<u32>]) -> f64 {
     let ring_area = |ring: &[u32]| {
         let p = |k: usize| dt.point(ring[k % ring.len()]);
         let twice: f64 = (0..ring.len())

@@ -86,7 +86,7 @@ pub(super) fn coarse_reading(dt: &Triangulation, steps: &Steps) -> Option<FineRe
             coarse.loops.iter().map(|l| l.iter().map(|&i| kept[i]).collect()).collect();
         if let Some(fine) = refine(dt, &loops, radius) {
             let found = check_curves(dt, fine.loops.iter().map(|l| (l.as_slice(), true)));
-            if found.is_empty() {
+            if !super::curves_fail(&found) {
                 return Some(fine);
             }
         }

@@ -94,8 +94,8 @@ use crate::delaunay::Triangulation;
 use crate::geometry::distance;
 use crate::proximity::sigdt::TIE_SLACK;
 use crate::result::{
-    degenerate_result, diagnose, from_vertex_pairs, inside_left_out, FindingKind, LeftOut,
-    LeftOutReason, Reconstruction, Stats, Status,
+    degenerate_result, diagnose, from_vertex_pairs, inside_left_out, Finding, FindingKind, LeftOut,
+    LeftOutReason, Reconstruction, Stats, Status, DEPTH_RATIO,
 };
 use crate::sig_connect2d::sig_connect2d_on;
 use chain_join::Chains;
@@ -152,17 +152,26 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
             if zigzags && fine_rec.status.is_manifold() {
                 fine_rec.status = Status::Noisy;
             }
+            fine_rec.diagnosis = diagnose(dt, &fine_rec);
             fine_rec
         }
         None => rec,
     }
 }
 
-/// Whether `findings` say the reading's curves break the sampling condition: any finding
-/// but outliers on the curves, where the curves passed and a point beside them was dropped
-/// (the coarse reading threads every point back in anyway).
-fn curves_fail(findings: &[crate::result::Finding]) -> bool {
-    findings.iter().any(|f| f.kind != FindingKind::OutliersOnCurve)
+/// Whether `findings` say the reading's curves break the sampling condition by enough to
+/// read them again: any finding but outliers on the curves (the curves passed and a point
+/// beside them was dropped; the coarse reading threads every point back in anyway), noise
+/// that moves the area (which no other reading through the same points takes away), and
+/// samples less than [`DEPTH_RATIO`] deep in an edge's disk (reported, but what noise
+/// leaves there a coarser reading does not remove: it lost good readings of noisy
+/// outlines, `docs/sig-auto.md`).
+fn curves_fail(findings: &[Finding]) -> bool {
+    findings.iter().any(|f| match f.kind {
+        FindingKind::OutliersOnCurve | FindingKind::NoisyArea => false,
+        FindingKind::PassesOverSamples => f.worst >= DEPTH_RATIO,
+        _ => true,
+    })
 }
 
 /// `rec` with the points where it doubles back left out as outliers (`wired_outliers`),
