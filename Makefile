@@ -210,7 +210,7 @@ data-non-manifold:
 ## Issue 29's pictures in docs/sig-auto.md: real outlines clean, noisy and with outliers,
 ## a win and a failure each (SIG-CONNECT2D and SIG-AUTO).
 OUTLINE_PICTURES := mp7_fork8_lfs030_clean mp7_spring11_lfs030_clean \
-  pysal_us48_r1_k1_noise025 mp7_horseshoe10_lfs030_noise025 \
+  pysal_us48_r1_k1_noise025 mp7_HCircle16_lfs030_noise025 \
   gshhs_island247_smooth_outliers mp7_bat7_uni050_outliers mp7_elephant11_uni050_outliers
 REAL_WINS := mp7_octopus16_lfs030_out03 pysal_10740_r167_k1 mp7_Bone20_lfs030_noise0.002 \
   mp7_spring11_lfs030
