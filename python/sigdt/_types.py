@@ -96,6 +96,7 @@ FindingKind = Literal[
     "doubles-back",
     "small-loops",
     "open-ends",
+    "ends-meet",
     "outliers-on-curve",
     "noisy-area",
 ]
@@ -105,20 +106,23 @@ class Finding(TypedDict):
     """One finding of the sampling check (:attr:`sigdt.Reconstruction.diagnosis`): where the
     result breaks the sampling condition it assumes.
 
-    ``kind`` is ``"passes-over-samples"`` (edges whose diametral disk holds another point at
-    least 1 point spacing deep, or 2 for the curve's next point beyond an end), ``"doubles-back"`` (the curve turns by more than 150
-    degrees between two edges each at least 4 times the spacing at its far end) or
-    ``"small-loops"`` (loops of fewer than seven points, which no closed curve sampled within
-    the condition gives), ``"open-ends"`` (an open path ends next to points nearer than
-    half its last edge: the curve may go on there), ``"outliers-on-curve"`` (points left
-    out as outliers lie within half their spacing of an edge of the result, or nearer to
-    one of its vertices than half that vertex's longer edge) or
+    ``kind`` is ``"passes-over-samples"`` (edges whose diametral disk holds another point
+    at least 1 point spacing deep, or 2 for the curve's next point beyond an end),
+    ``"doubles-back"`` (the curve turns by more than 150 degrees between two edges each at
+    least 4 times the spacing at its far end), ``"small-loops"`` (loops of fewer than
+    seven points, which no closed curve sampled within the condition gives),
+    ``"open-ends"`` (an open path ends next to points nearer than half its last edge: the
+    curve may go on there), ``"ends-meet"`` (two ends of open paths lie less than four
+    times their last edges apart: the curve may close there), ``"outliers-on-curve"``
+    (points left out as outliers lie within half their spacing of an edge of the result,
+    or nearer to one of its vertices than half that vertex's longer edge) or
     ``"noisy-area"`` (the loops' turns reverse at most points, as noise makes them, by
     enough to make the area they enclose uncertain by more than 5 %); ``count`` edges,
-    points or loops show it; ``worst`` is the deepest reach in point spacings, the sharpest
-    turn in degrees, the size of the smallest loop, the last edge over the nearest
-    distance, the nearest outlier's distance over its spacing or the uncertain share of
-    the area, at input index ``at``;
+    points, pairs of ends or loops show it; ``worst`` is the deepest reach in point
+    spacings, the sharpest turn in degrees, the size of the smallest loop, the last edge
+    over the nearest distance, the smallest gap between ends over their last edge, the
+    nearest outlier's distance over its spacing or the uncertain share of the area, at
+    input index ``at``;
     ``message`` is the sentence front ends print."""
 
     kind: FindingKind

@@ -3,6 +3,7 @@
 //! the loops grouped into polygons with holes.
 
 mod degenerate;
+mod ends_meet;
 mod from_edges;
 mod noisy_area;
 mod polygons;

@@ -48,6 +48,11 @@
 //!    noise (or samples too sparse for their curve): `result/noisy_area.rs`, finding
 //!    [`FindingKind::NoisyArea`].
 //!
+//! 7. **An open curve ends where its samples end** (property 4 again): two ends of open
+//!    paths nearer to each other than [`LONG_EDGE_RATIO`] times their longer last edge
+//!    could be joined by an edge like the others: `result/ends_meet.rs`, finding
+//!    [`FindingKind::EndsMeet`].
+//!
 //! Long straight sides between dense corners (glyphs, buildings) break u < 2 without being
 //! wrong; their disks are empty, so neither finding fires on them.
 //!
@@ -62,6 +67,7 @@
 //! O(n) neighbour slots when the result left points out as outliers (property 5).
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
+use super::ends_meet::{ends_meet, PathEnd};
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, segment_distance};
 
@@ -95,14 +101,14 @@ const DOUBLING_BACK_COS: f64 = -0.866_025_403_784_438_6;
 pub struct Finding {
     /// What kind of violation.
     pub kind: FindingKind,
-    /// How many edges (passing over samples), vertices (doubling back), loops, open ends
-    /// or outliers show it.
+    /// How many edges (passing over samples), vertices (doubling back), loops, open ends,
+    /// pairs of ends or outliers show it.
     pub count: usize,
     /// The worst value: how deep a sample reaches into an edge's disk, in point spacings,
     /// the sharpest turn in degrees, the number of points of the smallest small loop, an
-    /// open end's last edge over its nearest distance, the nearest outlier's distance to
-    /// the curves over the spacing it is measured against, or the share of the area that
-    /// noise makes uncertain.
+    /// open end's last edge over its nearest distance, the smallest gap between two ends
+    /// over their longer last edge, the nearest outlier's distance to the curves over the
+    /// spacing it is measured against, or the share of the area that noise makes uncertain.
     pub worst: f64,
     /// Input index of a point where the worst value is (an end of the edge, or the vertex
     /// that turns).
@@ -128,6 +134,9 @@ pub enum FindingKind {
     /// Points left out as outliers within half their spacing of an edge of the result, or
     /// nearer to one of its vertices than half that vertex's longer edge.
     OutliersOnCurve,
+    /// Pairs of ends of open paths nearer to each other than [`LONG_EDGE_RATIO`] times their
+    /// longer last edge (`result/ends_meet.rs`): the curve may go on, or close, there.
+    EndsMeet,
     /// Loops whose points scatter like noise (the turn reverses at most of them), by enough
     /// to make the area they enclose uncertain by more than a twentieth
     /// (`result/noisy_area.rs`).
@@ -136,7 +145,7 @@ pub enum FindingKind {
 
 impl FindingKind {
     /// The kebab-case name: `passes-over-samples`, `doubles-back`, `small-loops`,
-    /// `open-ends`, `outliers-on-curve` or `noisy-area`.
+    /// `open-ends`, `ends-meet`, `outliers-on-curve` or `noisy-area`.
     pub fn name(self) -> &'static str {
         match self {
             FindingKind::PassesOverSamples => "passes-over-samples",
@@ -144,6 +153,7 @@ impl FindingKind {
             FindingKind::SmallLoops => "small-loops",
             FindingKind::OpenEnds => "open-ends",
             FindingKind::OutliersOnCurve => "outliers-on-curve",
+            FindingKind::EndsMeet => "ends-meet",
             FindingKind::NoisyArea => "noisy-area",
         }
     }
@@ -181,6 +191,12 @@ impl std::fmt::Display for Finding {
                 f,
                 "{} point(s) left out as outliers lie on the curves (worst at point {}, {:.2} \
                  of the point spacing from them; an outlier lies off them)",
+                self.count, self.at, self.worst
+            ),
+            FindingKind::EndsMeet => write!(
+                f,
+                "{} pair(s) of open ends lie less than {LONG_EDGE_RATIO} last edges apart (worst \
+                 at point {}, {:.1} last edges): the curve may go on, or close, there",
                 self.count, self.at, self.worst
             ),
             FindingKind::NoisyArea => write!(
@@ -344,6 +360,7 @@ pub(crate) fn check_curves<'a>(
     // Small loops count only beside a curve of sampled size: a lone square of four points
     // is a reading of what was given, a knot of three beside a coastline is noise.
     let mut has_large_curve = false;
+    let mut path_ends = Vec::new();
     for (curve, closed) in curves {
         let input = |v: u32| dt.input_index(v);
         if !closed && curve.len() >= 2 {
@@ -354,6 +371,7 @@ pub(crate) fn check_curves<'a>(
                 if ratio > 2.0 {
                     ends.add(ratio, input(end));
                 }
+                path_ends.push(PathEnd { end, next, last });
             }
         }
         if closed && curve.len() < MIN_LOOP_POINTS {
@@ -374,7 +392,13 @@ pub(crate) fn check_curves<'a>(
     if !has_large_curve {
         small.count = 0;
     }
-    [over, back, small, ends].into_iter().filter(|t| t.count > 0).map(|t| t.finding()).collect()
+    let mut found: Vec<Finding> = [over, back, small, ends]
+        .into_iter()
+        .filter(|t| t.count > 0)
+        .map(|t| t.finding())
+        .collect();
+    found.extend(ends_meet(dt, &path_ends));
+    found
 }
 
 /// The findings of the sampling check on `rec`, a result on `dt`'s points (input indices);
