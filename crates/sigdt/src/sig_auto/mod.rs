@@ -251,28 +251,30 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
                 Read { pairs: sub.line_edges().collect(), inside: Vec::new(), stats: line.stats }
             }
             None => {
-                let mut found = Vec::new();
                 if round == 0 && steps.isolated {
                     isolated = isolated::isolated_pieces(dt);
-                    found = isolated.concat();
                 }
-                // Built only when there is no isolated piece to leave out first.
-                let forests = found.is_empty().then(|| Forests::new(sub));
-                if let Some(forests) = &forests {
-                    if round + 1 < MAX_ROUNDS && steps.branch_outliers {
-                        found = branches_far_off(sub, forests, steps);
+                // Isolated pieces are left out first; the forests are built only without them.
+                let (found, forests) = if round == 0 && !isolated.is_empty() {
+                    (isolated.concat(), None)
+                } else {
+                    let forests = Forests::new(sub);
+                    let far_off = round + 1 < MAX_ROUNDS && steps.branch_outliers;
+                    let found =
+                        if far_off { branches_far_off(sub, &forests, steps) } else { Vec::new() };
+                    (found, Some(forests))
+                };
+                match forests {
+                    Some(forests) if found.is_empty() => read_components(sub, &forests, steps),
+                    _ => {
+                        relinked = None;
+                        let gone: Vec<u32> = found.iter().map(|&v| whole(v)).collect();
+                        outliers.extend(&gone);
+                        let gone: std::collections::HashSet<u32> = gone.into_iter().collect();
+                        kept.retain(|v| !gone.contains(v));
+                        continue;
                     }
                 }
-                if !found.is_empty() {
-                    relinked = None;
-                    outliers.extend(found.iter().map(|&v| whole(v)));
-                    let gone: std::collections::HashSet<u32> =
-                        found.iter().map(|&v| whole(v)).collect();
-                    kept.retain(|v| !gone.contains(v));
-                    continue;
-                }
-                let Some(forests) = forests else { unreachable!("built when nothing was found") };
-                read_components(sub, &forests, steps)
             }
         };
         let read = match relinked.take() {
