@@ -37,7 +37,7 @@ const FLOORS_SIG_AUTO: &[(&str, usize)] = &[
     ("sharp", 74),
     ("open", 55),
     ("multiple", 35),
-    ("noisy", 39),
+    ("noisy", 41),
     ("outliers", 16),
     ("bezier", 100),
     ("large", 2),

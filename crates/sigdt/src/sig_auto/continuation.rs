@@ -15,7 +15,10 @@
 //! among readings that respect the spacing, the one that turns least follows the curve.
 //! Moves are taken largest gain first; each lowers the total turning, so the process ends.
 //! Only moves at a vertex that turns more than a sampled curve can (60°, from ε < 1) are
-//! considered: a reading that is locally consistent with a sampled curve is left alone.
+//! considered: a reading that is locally consistent with a sampled curve is left alone. A
+//! move that makes a vertex turn that sharply where it did not is made only when it gains
+//! more than one such turn: otherwise it trades one turn a sampled curve cannot make for
+//! another, which is how a curve comes apart across a neck about a spacing wide.
 //!
 //! # Complexity
 //! O(n · d³) to collect the first moves (`d` the Delaunay degree), then O(d³ log n) per move.
@@ -62,7 +65,8 @@ pub(crate) fn continue_smoothly(reading: &mut Reading<'_>) {
             && reading.joined(c, d)
             && !reading.joined(a, c)
             && !reading.joined(b, d)
-            && respects_spacing(reading, a, b, c, d);
+            && respects_spacing(reading, a, b, c, d)
+            && !trades_sharp_turns(reading, a, b, c, d);
         if !valid {
             continue;
         }
@@ -131,7 +135,10 @@ fn push_moves(reading: &Reading<'_>, a: u32, b: u32, queue: &mut BinaryHeap<Move
             if !(sharp(a) || sharp(b) || sharp(c) || sharp(d)) {
                 continue;
             }
-            if !respects_spacing(reading, a, b, c, d) || !dt.has_edge(b, d) {
+            if !respects_spacing(reading, a, b, c, d)
+                || trades_sharp_turns(reading, a, b, c, d)
+                || !dt.has_edge(b, d)
+            {
                 continue;
             }
             let gain = gain_of(reading, a, b, c, d);
@@ -159,4 +166,22 @@ fn respects_spacing(reading: &Reading<'_>, a: u32, b: u32, c: u32, d: u32) -> bo
         other => u_below_2(reading.length(v, new), reading.length(v, other)),
     };
     fits(a, b, c) && fits(c, d, a) && fits(b, a, d) && fits(d, c, b)
+}
+
+/// Whether the move makes one of its four vertices turn more than a sampled curve can where
+/// it did not before, and gains no more than one such turn. A move like that trades a turn a
+/// sampled curve cannot make for another: cut across a neck about a spacing wide, a curve
+/// comes apart into two loops that each keep a corner at the cut. Two curves the graph
+/// merged turn sharply at all four ends of their two bridges and come apart smoothly, with a
+/// far larger gain.
+fn trades_sharp_turns(reading: &Reading<'_>, a: u32, b: u32, c: u32, d: u32) -> bool {
+    let cos_limit = MAX_SAMPLED_TURN.cos();
+    let sharpened = |v: u32, old: u32, new: u32| {
+        let [x, y] = reading.neighbours(v);
+        let slots = if x == old { [new, y] } else { [x, new] };
+        !reading.turns_more_than(v, cos_limit) && reading.turns_more_than_with(v, slots, cos_limit)
+    };
+    let sharpens =
+        sharpened(a, b, c) || sharpened(b, a, d) || sharpened(c, d, a) || sharpened(d, c, b);
+    sharpens && gain_of(reading, a, b, c, d) <= MAX_SAMPLED_TURN
 }

@@ -591,4 +591,43 @@ mod tests {
         let at = rec.paths[0].iter().position(|&v| v == 21).unwrap();
         assert!([at - 1, at + 1].iter().any(|&k| rec.paths[0][k] == 10));
     }
+
+    #[test]
+    fn two_islands_closer_than_their_spacing_come_apart() {
+        // Two circles sampled at spacing 0.157, 0.1 apart: the graph joins them, good
+        // continuation splits the merged loop where it turns sharply at all four bridge ends.
+        let mut points = circle(40, 1.0, [0.0, 0.0]);
+        points.extend(circle(40, 1.0, [2.1, 0.0]));
+        let rec = run(&points);
+        assert_eq!(rec.status, Status::Polygons);
+        assert_eq!(rec.loops.len(), 2, "{:?}", rec.loops);
+    }
+
+    #[test]
+    fn a_neck_a_spacing_wide_is_not_cut() {
+        // A noisy glyph (ψ) whose arm meets the stem at a neck about one spacing wide: cutting
+        // across it would make two loops that each keep a corner at the cut, for a gain smaller
+        // than one sampled turn. SIG-CONNECT2D reads it right, and so must SIG-AUTO.
+        let numbers = |text: &str| -> Vec<Vec<f64>> {
+            let row = |line: &str| line.split_whitespace().map(|x| x.parse().unwrap()).collect();
+            text.lines().map(row).collect()
+        };
+        let points: Vec<Point> = numbers(include_str!(
+            "../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.xy"
+        ))
+        .iter()
+        .map(|p| [p[0], p[1]])
+        .collect();
+        let truth = numbers(include_str!(
+            "../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.gt"
+        ));
+        let rec = run(&points);
+        assert_eq!(rec.loops.len(), 1, "{:?}", rec.loops);
+        let edge = |a: f64, b: f64| (a.min(b) as usize, a.max(b) as usize);
+        let mut expected: Vec<_> = truth.iter().map(|e| edge(e[0], e[1])).collect();
+        let mut found: Vec<_> = rec.edges.iter().map(|&[a, b]| (a.min(b), a.max(b))).collect();
+        expected.sort_unstable();
+        found.sort_unstable();
+        assert_eq!(found, expected);
+    }
 }

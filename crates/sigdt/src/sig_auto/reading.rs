@@ -169,7 +169,12 @@ impl<'a> Reading<'a> {
     /// the dot product of the two edge directions against `cos(limit)` times their lengths,
     /// without the arc tangent.
     pub(crate) fn turns_more_than(&self, v: u32, cos_limit: f64) -> bool {
-        let [x, y] = self.neighbours(v);
+        self.turns_more_than_with(v, self.neighbours(v), cos_limit)
+    }
+
+    /// [`turns_more_than`](Self::turns_more_than) with `v`'s neighbours in `slots`.
+    pub(crate) fn turns_more_than_with(&self, v: u32, slots: [u32; 2], cos_limit: f64) -> bool {
+        let [x, y] = slots;
         if x == NONE || y == NONE {
             return false;
         }
