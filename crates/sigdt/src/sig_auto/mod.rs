@@ -612,15 +612,13 @@ mod tests {
             let row = |line: &str| line.split_whitespace().map(|x| x.parse().unwrap()).collect();
             text.lines().map(row).collect()
         };
-        let points: Vec<Point> = numbers(include_str!(
-            "../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.xy"
-        ))
-        .iter()
-        .map(|p| [p[0], p[1]])
-        .collect();
-        let truth = numbers(include_str!(
-            "../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.gt"
-        ));
+        let points: Vec<Point> =
+            numbers(include_str!("../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.xy"))
+                .iter()
+                .map(|p| [p[0], p[1]])
+                .collect();
+        let truth =
+            numbers(include_str!("../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.gt"));
         let rec = run(&points);
         assert_eq!(rec.loops.len(), 1, "{:?}", rec.loops);
         let edge = |a: f64, b: f64| (a.min(b) as usize, a.max(b) as usize);
