@@ -32,13 +32,13 @@ const FLOORS_DEFAULT: &[(&str, usize)] = &[
 /// continuation reads as two loops), and gain two sharp cases; the second reading gains two
 /// noisy blobs.
 const FLOORS_SIG_AUTO: &[(&str, usize)] = &[
-    ("manifold", 105),
+    ("manifold", 106),
     ("manifold eps<1", 81),
     ("sharp", 74),
     ("open", 55),
     ("multiple", 35),
     ("noisy", 41),
-    ("outliers", 16),
+    ("outliers", 17),
     ("bezier", 100),
     ("large", 2),
 ];
