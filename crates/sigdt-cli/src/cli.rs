@@ -32,7 +32,7 @@ Input (INPUT is a file, or '-' for standard input):
                                    x and y from --columns X,Y (names or numbers from 1),
                                    else the only two columns or columns named x/y,
                                    lon/lat, longitude/latitude; ';' files may use
-                                   decimal commas
+                                   decimal commas ('1,5' is 1.5, so '1,000' is 1.0)
   WKT (.wkt)                       POINT, MULTIPOINT, LINESTRING, POLYGON, MULTI*,
                                    GEOMETRYCOLLECTION: every vertex (a ring's closing
                                    vertex once)

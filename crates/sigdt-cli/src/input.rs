@@ -30,6 +30,11 @@ impl Input {
     /// The points of `input`, a file or `-` for standard input, in any format of
     /// [`crate::read`].
     pub fn points(&self, input: &Path) -> Result<Vec<Point>> {
+        Ok(self.points_and_how(input)?.points)
+    }
+
+    /// [`Input::points`], and how they were read (the format; a table's columns).
+    pub fn points_and_how(&self, input: &Path) -> Result<read::Points> {
         let how = Reading { max_points: self.max_points, columns: self.columns.as_ref() };
         if is_dash(input) {
             read::points(io::stdin().lock(), "<stdin>", how)

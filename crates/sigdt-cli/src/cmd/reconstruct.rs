@@ -64,7 +64,8 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
             }
         },
     };
-    let mut points = input.points(&args.input)?;
+    let read = input.points_and_how(&args.input)?;
+    let (mut points, read_as) = (read.points, read.how);
     let options = Options { method: args.method, leaf_elimination: !args.no_leaf_elimination };
     let start = Instant::now();
     // Edges and loops are indices: the points can go once triangulated (less peak memory).
@@ -83,7 +84,7 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         );
     }
     if args.verbose {
-        summary(&options, &rec, elapsed);
+        summary(&options, &rec, elapsed, &read_as);
     }
     warnings(&rec);
     output.write(|w| format.write(w, &points, &rec))
@@ -130,7 +131,7 @@ fn left_out_summary(rec: &Reconstruction) -> String {
 }
 
 /// Prints the `--verbose` summary of a run to stderr.
-fn summary(options: &Options, rec: &Reconstruction, ms: f64) {
+fn summary(options: &Options, rec: &Reconstruction, ms: f64, read_as: &str) {
     let s = &rec.stats;
     let method = match options.method {
         // CONNECT2D always adds leaf edges to its BC0; the option applies to SIGDT only.
@@ -142,7 +143,7 @@ fn summary(options: &Options, rec: &Reconstruction, ms: f64) {
     };
     let lines = [
         format!("method:                    {method}"),
-        format!("points:                    {}", s.points),
+        format!("points:                    {} (read as {read_as})", s.points),
         format!("distinct points:           {}", s.distinct_points),
         format!("duplicates:                {}", rec.duplicates.len()),
         format!("edges:                     {}", rec.edges.len()),

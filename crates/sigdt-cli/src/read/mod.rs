@@ -26,6 +26,8 @@ use anyhow::{Context, Result};
 use sigdt::io::PointFormat;
 use sigdt::Point;
 
+use crate::messages::UsageError;
+
 pub use table::Columns;
 
 /// The gzip magic bytes.
@@ -40,8 +42,17 @@ pub struct Reading<'a> {
     pub columns: Option<&'a Columns>,
 }
 
+/// Points read from a file, and how: the format and, for a table, the columns.
+#[derive(Debug)]
+pub struct Points {
+    pub points: Vec<Point>,
+    /// For `--verbose`: "WKT", "columns 'lon' and 'lat' of a table (the header row
+    /// skipped)", ...
+    pub how: String,
+}
+
 /// The points of `reader`, named `name` in errors (a path or `<stdin>`); see the module docs.
-pub fn points(reader: impl Read, name: &str, how: Reading<'_>) -> Result<Vec<Point>> {
+pub fn points(reader: impl Read, name: &str, how: Reading<'_>) -> Result<Points> {
     let mut reader = BufReader::with_capacity(1 << 16, reader);
     let head = reader.fill_buf().with_context(|| format!("{name}: cannot read"))?;
     if head.starts_with(GZIP) {
@@ -50,9 +61,22 @@ pub fn points(reader: impl Read, name: &str, how: Reading<'_>) -> Result<Vec<Poi
         let mut unzipped = BufReader::with_capacity(1 << 16, unzipped);
         // A corrupt stream fails at its first read, with the file's name.
         unzipped.fill_buf().with_context(|| format!("{name}: not a valid gzip file"))?;
-        return uncompressed(unzipped, name, inner, how);
+        let mut read = uncompressed(unzipped, name, inner, how)?;
+        read.how = format!("{} (gzip)", read.how);
+        return Ok(read);
     }
     uncompressed(reader, name, name, how)
+}
+
+/// The formats of [`uncompressed`], found before reading.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Format {
+    Npy,
+    Wkt,
+    GeoJson,
+    Table,
+    /// Plain lines or `.gtn`, read by [`sigdt::io`].
+    Kernel(PointFormat),
 }
 
 /// [`points`] of an uncompressed stream; `shown` names it in errors, `inner` (the name
@@ -62,13 +86,51 @@ fn uncompressed<R: BufRead>(
     shown: &str,
     inner: &str,
     how: Reading<'_>,
-) -> Result<Vec<Point>> {
+) -> Result<Points> {
     let head = reader.fill_buf().with_context(|| format!("{shown}: cannot read"))?;
-    if head.starts_with(npy::MAGIC) {
-        return npy::read(reader, shown, how.max_points);
-    }
+    let format = detect(head, inner);
+    let max = how.max_points;
+    let done = |points: Vec<Point>, how: &str| Points { points, how: how.to_string() };
     if let Some(columns) = how.columns {
-        return table::read(reader, shown, Some(columns), how.max_points);
+        let other = match format {
+            Format::Table | Format::Kernel(PointFormat::Plain) => None,
+            Format::Kernel(PointFormat::Gtn) => Some("a .gtn file"),
+            Format::Npy => Some("a NumPy array"),
+            Format::Wkt => Some("WKT"),
+            Format::GeoJson => Some("GeoJSON"),
+        };
+        if let Some(kind) = other {
+            return Err(UsageError {
+                command: "",
+                kind: clap::error::ErrorKind::ArgumentConflict,
+                message: format!("--columns: {shown} is {kind}, which has no columns to choose"),
+            }
+            .into());
+        }
+        let table = table::read(reader, shown, Some(columns), max)?;
+        return Ok(Points { points: table.points, how: table.how });
+    }
+    Ok(match format {
+        Format::Npy => done(npy::read(reader, shown, max)?, "a NumPy array"),
+        Format::Wkt => done(wkt::read(reader, shown, max)?, "WKT"),
+        Format::GeoJson => done(geojson::read(reader, shown, max)?, "GeoJSON"),
+        Format::Table => {
+            let table = table::read(reader, shown, None, max)?;
+            Points { points: table.points, how: table.how }
+        }
+        Format::Kernel(format) => {
+            let points = sigdt::io::parse_points_at_most(reader, shown, Some(format), max)?;
+            let how = if format == PointFormat::Gtn { ".gtn" } else { "plain lines" };
+            done(points, how)
+        }
+    })
+}
+
+/// The format of a stream that starts with `head`, named `inner` (without `.gz`); see the
+/// module docs.
+fn detect(head: &[u8], inner: &str) -> Format {
+    if head.starts_with(npy::MAGIC) {
+        return Format::Npy;
     }
     let extension = Path::new(inner)
         .extension()
@@ -77,21 +139,18 @@ fn uncompressed<R: BufRead>(
         .unwrap_or_default();
     let first = first_content(head);
     match extension.as_str() {
-        "wkt" => return wkt::read(reader, shown, how.max_points),
-        "geojson" | "json" => return geojson::read(reader, shown, how.max_points),
-        "csv" | "tsv" if table::is_table(first) => {
-            return table::read(reader, shown, None, how.max_points);
-        }
+        "wkt" => return Format::Wkt,
+        "geojson" | "json" => return Format::GeoJson,
+        "csv" | "tsv" if table::is_table(first) => return Format::Table,
         _ => {}
     }
     if first.starts_with(['{', '[']) {
-        return geojson::read(reader, shown, how.max_points);
+        return Format::GeoJson;
     }
     if wkt::starts_wkt(first) {
-        return wkt::read(reader, shown, how.max_points);
+        return Format::Wkt;
     }
-    let format = PointFormat::from_path(Path::new(inner));
-    Ok(sigdt::io::parse_points_at_most(reader, shown, format, how.max_points)?)
+    Format::Kernel(PointFormat::detect(Path::new(inner), first))
 }
 
 /// The first line of `head` with content: leading white space, a UTF-8 byte-order mark and
@@ -117,7 +176,31 @@ mod tests {
     use std::io::Write;
 
     fn read(bytes: &[u8], name: &str) -> Result<Vec<Point>> {
-        points(bytes, name, Reading { max_points: 100, columns: None })
+        points(bytes, name, Reading { max_points: 100, columns: None }).map(|p| p.points)
+    }
+
+    #[test]
+    fn columns_are_refused_for_formats_without_columns() {
+        // Issue 30, G8: WKT and GeoJSON gave no points, a .gtn header became a point.
+        let columns: Columns = "1,2".parse().unwrap();
+        let with_columns = |bytes: &[u8], name: &str| {
+            points(bytes, name, Reading { max_points: 100, columns: Some(&columns) })
+        };
+        for (bytes, name, kind) in [
+            (&b"MULTIPOINT (0 0, 1 0, 1 1)"[..], "a.wkt", "WKT"),
+            (&b"{\"type\": \"MultiPoint\", \"coordinates\": [[0,0]]}"[..], "a", "GeoJSON"),
+            (&b"3 2 0 0\n0 0 0\n1 1 0\n2 1 1\n"[..], "a", "a .gtn file"),
+            (&b"\x93NUMPY"[..], "a.npy", "a NumPy array"),
+        ] {
+            let err = with_columns(bytes, name).unwrap_err();
+            let usage = err.downcast_ref::<UsageError>().expect("a usage error (exit 2)");
+            assert_eq!(
+                usage.message,
+                format!("--columns: {name} is {kind}, which has no columns to choose")
+            );
+        }
+        let read = with_columns(b"0 0\n1 0\n1 1\n", "a.xy").unwrap();
+        assert_eq!((read.points.len(), read.how.as_str()), (3, "columns 1 and 2 of a table"));
     }
 
     #[test]

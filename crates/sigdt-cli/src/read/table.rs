@@ -6,7 +6,11 @@
 //!
 //! The separator is the first of `;`, tab and `,` found in the first row, else white space.
 //! With `;` separators a number may use a decimal comma (`1,5`), as spreadsheets write it in
-//! many locales. Blank lines and lines starting with `#` are skipped.
+//! many locales (so `1,000` is 1.0 there). Blank lines and lines starting with `#` are
+//! skipped; a quoted field may hold line breaks (RFC 4180). The first row is a header when
+//! the fields of the chosen columns are names (with no columns chosen, or chosen by name:
+//! every field that is not empty), by the plain reader's rule, so a headerless first row with
+//! a name or `NA` in another column is read as a point; `--verbose` says which.
 //!
 //! # Errors
 //! The file and line of a row that is too short or holds something other than a finite
@@ -14,12 +18,15 @@
 //! not there or the columns cannot be found.
 //!
 //! # Complexity
-//! O(length of the text), streamed line by line.
+//! O(length of the text), streamed record by record; a record (a line, or lines joined
+//! inside quotes) longer than [`MAX_LINE`] bytes is an error, so memory stays bounded by it
+//! and the points kept.
 
 use std::io::BufRead;
 use std::str::FromStr;
 
-use anyhow::{anyhow, Context, Result};
+use anyhow::{anyhow, Result};
+use sigdt::io::{quoted, MAX_LINE};
 use sigdt::Point;
 
 /// The x and y columns of `--columns`.
@@ -71,38 +78,41 @@ pub fn is_table(first: &str) -> bool {
     first.contains([';', '"', '\t']) || first.split(',').count() > 2
 }
 
+/// A table's points and how they were read (columns, header), for `--verbose`.
+#[derive(Debug)]
+pub struct Table {
+    pub points: Vec<Point>,
+    /// "columns 'lon' and 'lat' (the header row skipped)" or "columns 2 and 3".
+    pub how: String,
+}
+
 /// The points of the table `reader`, from `columns` or the columns found; see the module docs.
 pub fn read(
     reader: impl BufRead,
     name: &str,
     columns: Option<&Columns>,
     max_points: usize,
-) -> Result<Vec<Point>> {
-    let mut rows = reader.lines().enumerate().filter_map(|(k, line)| match line {
-        Ok(line) => {
-            let line = line.trim_start_matches('\u{feff}').trim().to_string();
-            (!line.is_empty() && !line.starts_with('#')).then_some(Ok((k + 1, line)))
-        }
-        Err(e) => Some(Err(e)),
-    });
-    let Some(first) = rows.next() else { return Ok(Vec::new()) };
-    let (first_line, first) = first.with_context(|| format!("{name}: cannot read"))?;
+) -> Result<Table> {
+    let mut records = Records::new(reader, name);
+    let Some((first_line, first)) = records.next()? else {
+        return Ok(Table { points: Vec::new(), how: "an empty table".to_string() });
+    };
+    let first = first.to_string();
     let separator = [';', '\t', ','].into_iter().find(|&c| first.contains(c));
     let split = |line: &str| split_fields(line, separator);
     let first_fields = split(&first).map_err(|m| anyhow!("{name}:{first_line}: {m}"))?;
-    let is_header = first_fields.iter().any(|f| number(f, separator).is_err());
+    let is_header = is_header(&first_fields, columns);
     let header = is_header.then(|| first_fields.clone());
     let (cx, cy) = choose(columns, header.as_deref(), first_fields.len())
         .map_err(|m| anyhow!("{name}: {m}"))?;
-    let label = |c: usize| match &header {
-        Some(h) => format!("column '{}'", h[c]),
-        None => format!("column {}", c + 1),
+    let named = |c: usize| match &header {
+        Some(h) => quoted(&h[c]),
+        None => (c + 1).to_string(),
     };
+    let label = |c: usize| format!("column {}", named(c));
     let mut points = Vec::new();
-    let data = (!is_header).then_some(Ok((first_line, first))).into_iter().chain(rows);
-    for row in data {
-        let (line, text) = row.with_context(|| format!("{name}: cannot read"))?;
-        let fields = split(&text).map_err(|m| anyhow!("{name}:{line}: {m}"))?;
+    let mut add = |line: usize, text: &str| -> Result<()> {
+        let fields = split(text).map_err(|m| anyhow!("{name}:{line}: {m}"))?;
         let value = |c: usize| -> Result<f64> {
             let field = fields.get(c).ok_or_else(|| {
                 anyhow!("{name}:{line}: {} fields, {} is missing", fields.len(), label(c))
@@ -114,8 +124,128 @@ pub fn read(
             return Err(super::too_many(name, max_points));
         }
         points.push(point);
+        Ok(())
+    };
+    if !is_header {
+        add(first_line, &first)?;
     }
-    Ok(points)
+    while let Some((line, text)) = records.next()? {
+        add(line, text)?;
+    }
+    let skipped = if is_header { " (the header row skipped)" } else { "" };
+    let how = format!("columns {} and {} of a table{skipped}", named(cx), named(cy));
+    Ok(Table { points, how })
+}
+
+/// Whether the first row, split into `fields`, is a header, by the plain reader's rule for
+/// names: with columns chosen by number, when the fields of those columns are names;
+/// otherwise when every field that is not empty is. So a headerless table whose first row
+/// has a name, `NA` or nothing in a column not read loses no point.
+fn is_header(fields: &[String], columns: Option<&Columns>) -> bool {
+    let is_name = |field: &str| {
+        let unsigned = field.trim_start_matches(['+', '-']).trim_start_matches('.');
+        let numeric_start = unsigned.chars().next().is_some_and(char::is_numeric);
+        field.chars().any(char::is_alphabetic) && !numeric_start && field.parse::<f64>().is_err()
+    };
+    match columns {
+        Some(Columns { x: Column::Number(x), y: Column::Number(y) }) => {
+            [x, y].iter().all(|&&k| fields.get(k - 1).is_some_and(|f| is_name(f)))
+        }
+        _ => {
+            let mut filled = fields.iter().filter(|f| !f.is_empty()).peekable();
+            filled.peek().is_some() && filled.all(|f| is_name(f))
+        }
+    }
+}
+
+/// The records of a table: lines with content (blank lines and `#` comment lines skipped, a
+/// UTF-8 byte-order mark dropped), a record running on over line breaks inside a quoted
+/// field (RFC 4180). A record may hold at most [`MAX_LINE`] bytes, so memory stays bounded
+/// whatever the input.
+struct Records<'a, R> {
+    reader: R,
+    name: &'a str,
+    buf: Vec<u8>,
+    /// 1-based number of the last line read.
+    line: usize,
+}
+
+impl<'a, R: BufRead> Records<'a, R> {
+    fn new(reader: R, name: &'a str) -> Self {
+        Records { reader, name, buf: Vec::new(), line: 0 }
+    }
+
+    /// The next record with content and the number of its first line; `None` at the end.
+    fn next(&mut self) -> Result<Option<(usize, &str)>> {
+        loop {
+            self.buf.clear();
+            let first_line = self.line + 1;
+            // One more line while a quote is open: an odd count of `"` so far.
+            let mut quotes = 0;
+            let mut counted = 0;
+            while self.read_line()? {
+                quotes += bytecount(&self.buf[counted..], b'"');
+                counted = self.buf.len();
+                if quotes % 2 == 0 {
+                    break;
+                }
+            }
+            if self.buf.is_empty() {
+                return Ok(None);
+            }
+            let name = self.name;
+            let text = std::str::from_utf8(&self.buf)
+                .map_err(|_| anyhow!("{name}:{first_line}: not UTF-8 text"))?;
+            let text = if first_line == 1 { text.trim_start_matches('\u{feff}') } else { text };
+            let text = text.trim();
+            if !text.is_empty() && !text.starts_with('#') {
+                // Re-borrow for the caller: the same bytes, trimmed.
+                let start = text.as_ptr() as usize - self.buf.as_ptr() as usize;
+                let range = start..start + text.len();
+                let text = std::str::from_utf8(&self.buf[range]).expect("checked above");
+                return Ok(Some((first_line, text)));
+            }
+        }
+    }
+
+    /// Appends the next line, without its line ending, to the buffer; `false` at the end of
+    /// input. A line past [`MAX_LINE`] bytes is an error, found before it is held whole.
+    fn read_line(&mut self) -> Result<bool> {
+        let name = self.name;
+        let mut read_any = false;
+        loop {
+            let chunk = match self.reader.fill_buf() {
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+                Err(e) => return Err(anyhow!("{name}: cannot read: {e}")),
+                Ok(chunk) => chunk,
+            };
+            if chunk.is_empty() {
+                if read_any {
+                    self.line += 1;
+                }
+                return Ok(read_any);
+            }
+            read_any = true;
+            let (take, ends) = match chunk.iter().position(|&b| b == b'\n') {
+                Some(i) => (i + 1, true),
+                None => (chunk.len(), false),
+            };
+            if self.buf.len() + take > MAX_LINE + 1 {
+                return Err(anyhow!("{name}:{}: line longer than {MAX_LINE} bytes", self.line + 1));
+            }
+            self.buf.extend_from_slice(&chunk[..take]);
+            self.reader.consume(take);
+            if ends {
+                self.line += 1;
+                return Ok(true);
+            }
+        }
+    }
+}
+
+/// How many times `byte` occurs in `bytes`.
+fn bytecount(bytes: &[u8], byte: u8) -> usize {
+    bytes.iter().filter(|&&b| b == byte).count()
 }
 
 /// The 0-based x and y columns.
@@ -197,9 +327,9 @@ fn number(field: &str, separator: Option<char>) -> Result<f64, String> {
     let parsed = if decimal_comma { text.replace(',', ".").parse() } else { text.parse::<f64>() };
     match parsed {
         Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(format!("'{text}' is not finite")),
+        Ok(_) => Err(format!("{} is not finite", quoted(text))),
         Err(_) if text.is_empty() => Err("empty".to_string()),
-        Err(_) => Err(format!("'{text}' is not a number")),
+        Err(_) => Err(format!("{} is not a number", quoted(text))),
     }
 }
 
@@ -209,7 +339,7 @@ mod tests {
 
     fn parse(text: &str, columns: Option<&str>) -> Result<Vec<Point>> {
         let columns: Option<Columns> = columns.map(|c| c.parse().unwrap());
-        read(text.as_bytes(), "t.csv", columns.as_ref(), 1000)
+        read(text.as_bytes(), "t.csv", columns.as_ref(), 1000).map(|t| t.points)
     }
 
     #[test]
@@ -248,8 +378,56 @@ mod tests {
         assert!(parse("\"a,b\n", None).unwrap_err().to_string().contains("not closed"));
         assert!(parse("x;y\n1;inf\n", None).unwrap_err().to_string().contains("not finite"));
         assert!("1".parse::<Columns>().is_err() && "0,1".parse::<Columns>().is_err());
-        let many = read("x,y\n1,2\n3,4\n".as_bytes(), "t.csv", None, 1).unwrap_err();
+        let many = parse_at_most("x,y\n1,2\n3,4\n", 1).unwrap_err();
         assert!(many.to_string().contains("more than 1 points"));
+    }
+
+    fn parse_at_most(text: &str, max_points: usize) -> Result<Vec<Point>> {
+        read(text.as_bytes(), "t.csv", None, max_points).map(|t| t.points)
+    }
+
+    #[test]
+    fn a_first_row_is_a_header_only_when_the_chosen_fields_are_names() {
+        // A name column, `NA` or an empty field in a column not read: no header (issue 30, G7).
+        let text = "p1,0,0\np2,1,0\np3,1,1\np4,0,1\n";
+        assert_eq!(parse(text, Some("2,3")).unwrap().len(), 4);
+        assert_eq!(parse("NA,0,0\n,1,0\n", Some("2,3")).unwrap().len(), 2);
+        let table = read("id,x,y\n1,0,0\n".as_bytes(), "t.csv", Some(&"2,3".parse().unwrap()), 9);
+        let table = table.unwrap();
+        assert_eq!(
+            (table.points.len(), table.how.as_str()),
+            (1, "columns 'x' and 'y' of a table (the header row skipped)")
+        );
+        // Pandas writes an empty name above its index column.
+        assert_eq!(parse(",x,y\n0,1.5,2\n", None).unwrap(), vec![[1.5, 2.0]]);
+        // A first row with a number in a chosen column and a word in the other is an error.
+        let err = parse("x,5\n1,2\n", Some("1,2")).unwrap_err().to_string();
+        assert_eq!(err, "t.csv:1: column 1: 'x' is not a number");
+    }
+
+    #[test]
+    fn lines_are_bounded_and_quoted_fields_may_hold_line_breaks() {
+        // One endless line (`/dev/zero --columns 1,2`): an error before it is held whole (G4).
+        struct Zeros;
+        impl std::io::Read for Zeros {
+            fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+                buf.fill(0);
+                Ok(buf.len())
+            }
+        }
+        let columns: Columns = "1,2".parse().unwrap();
+        let reader = std::io::BufReader::new(Zeros);
+        let err = read(reader, "z", Some(&columns), 9).unwrap_err().to_string();
+        assert_eq!(err, format!("z:1: line longer than {MAX_LINE} bytes"));
+        // RFC 4180: a line break inside quotes, in a column not read (G21).
+        let text = "name,x,y\n\"two\nlines\",1,2\n\"c\",3,4\n";
+        let table = read(text.as_bytes(), "t.csv", None, 9).unwrap();
+        assert_eq!(table.points, vec![[1.0, 2.0], [3.0, 4.0]]);
+        let err = parse("x,y,z\n1,2,3\n\"a,2,3\n", Some("2,3")).unwrap_err().to_string();
+        assert_eq!(err, "t.csv:3: a quoted field is not closed");
+        // Control characters in a field are escaped in messages (G11).
+        let err = parse("x,y\n1,\u{1b}[2J\n", None).unwrap_err().to_string();
+        assert_eq!(err, "t.csv:2: column 'y': '\\u{1b}[2J' is not a number");
     }
 
     #[test]

@@ -44,6 +44,25 @@ impl PointFormat {
             _ => None,
         }
     }
+
+    /// The format of the file at `path` whose first line with content is `first_line`: by
+    /// extension ([`PointFormat::from_path`]), else `.gtn` when that line is a gtn header
+    /// (`N 2 0 0`), else plain, as [`parse_points`] decides it.
+    ///
+    /// ```
+    /// use sigdt::io::PointFormat;
+    /// use std::path::Path;
+    /// assert_eq!(PointFormat::detect(Path::new("a"), "3 2 0 0"), PointFormat::Gtn);
+    /// assert_eq!(PointFormat::detect(Path::new("a.xy"), "3 2 0 0"), PointFormat::Plain);
+    /// assert_eq!(PointFormat::detect(Path::new("-"), "x,y"), PointFormat::Plain);
+    /// ```
+    pub fn detect(path: &Path, first_line: &str) -> PointFormat {
+        match PointFormat::from_path(path) {
+            Some(format) => format,
+            None if is_gtn_header(first_line.trim()) => PointFormat::Gtn,
+            None => PointFormat::Plain,
+        }
+    }
 }
 
 /// Reads the points of the file at `path`, in the format given by its extension
