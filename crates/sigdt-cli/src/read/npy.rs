@@ -5,8 +5,11 @@
 //! (objects, complex numbers, structured arrays) and any shape other than `(n, 2)` is
 //! refused, saying what was found and how to save what sigdt reads.
 //!
+//! Integers beyond 2^53 in magnitude, which a float64 cannot hold exactly, are refused.
+//!
 //! # Complexity
-//! O(n); the data are read in one pass.
+//! O(n); the data are read in one pass, in blocks, so memory grows with the data that are
+//! there, whatever the header's shape claims.
 
 use std::io::Read;
 
@@ -73,11 +76,7 @@ pub fn read(mut reader: impl Read, name: &str, max_points: usize) -> Result<Vec<
              np.save(path, points.astype(float)))"
         )
     })?;
-    let mut data = vec![0u8; n * 2 * dtype.size];
-    reader.read_exact(&mut data).with_context(|| {
-        format!("{name}: the .npy data end before the {n} x 2 values its header announces")
-    })?;
-    let values: Vec<f64> = data.chunks_exact(dtype.size).map(|b| dtype.value(b)).collect();
+    let values = read_values(&mut reader, &dtype, n, fortran, name)?;
     let points: Vec<Point> =
         (0..n)
             .map(|i| {
@@ -92,6 +91,57 @@ pub fn read(mut reader: impl Read, name: &str, max_points: usize) -> Result<Vec<
         bail!("{name}: row {i} is {:?}: every coordinate must be finite", points[i]);
     }
     Ok(points)
+}
+
+/// The `2n` values after the header, read in blocks so that memory grows with the data
+/// actually there, never with what a header claims.
+fn read_values(
+    reader: &mut impl Read,
+    dtype: &Dtype,
+    n: usize,
+    fortran: bool,
+    name: &str,
+) -> Result<Vec<f64>> {
+    let row = |k: usize| if fortran { k % n.max(1) } else { k / 2 };
+    let count = n.checked_mul(2).context("too many values")?;
+    let mut values = Vec::with_capacity(count.min(1 << 16));
+    let mut block = vec![0u8; (1 << 16) * dtype.size];
+    while values.len() < count {
+        let want = (count - values.len()).min(1 << 16) * dtype.size;
+        let got = fill(reader, &mut block[..want])
+            .with_context(|| format!("{name}: cannot read the .npy data"))?;
+        for b in block[..got].chunks_exact(dtype.size) {
+            let value = dtype.value(b).with_context(|| {
+                format!(
+                    "{name}: row {}: an integer beyond 2^53, which a float64 cannot hold \
+                     exactly",
+                    row(values.len())
+                )
+            })?;
+            values.push(value);
+        }
+        if got < want {
+            bail!(
+                "{name}: the .npy data end after {} of the {n} x 2 values its header announces",
+                values.len()
+            );
+        }
+    }
+    Ok(values)
+}
+
+/// Reads into `buf` until it is full or the input ends; the number of bytes read.
+fn fill(reader: &mut impl Read, buf: &mut [u8]) -> std::io::Result<usize> {
+    let mut got = 0;
+    while got < buf.len() {
+        match reader.read(&mut buf[got..]) {
+            Ok(0) => break,
+            Ok(k) => got += k,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(got)
 }
 
 /// The value text of `key` in the header's Python dict literal: `'key': value`.
@@ -127,7 +177,8 @@ impl Dtype {
         known.then_some(Dtype { kind, size, big_endian })
     }
 
-    fn value(&self, bytes: &[u8]) -> f64 {
+    /// The value of `bytes`; `None` for an integer a float64 cannot hold exactly.
+    fn value(&self, bytes: &[u8]) -> Option<f64> {
         let mut b = [0u8; 8];
         if self.big_endian {
             b[..self.size].copy_from_slice(bytes);
@@ -135,15 +186,17 @@ impl Dtype {
         } else {
             b[..self.size].copy_from_slice(bytes);
         }
+        const EXACT: u64 = 1 << 53;
         let signed = |bits: u32| {
             let raw = u64::from_le_bytes(b);
-            (((raw << (64 - bits)) as i64) >> (64 - bits)) as f64
+            let v = ((raw << (64 - bits)) as i64) >> (64 - bits);
+            (v.unsigned_abs() <= EXACT).then_some(v as f64)
         };
         match (self.kind, self.size) {
-            ('f', 8) => f64::from_le_bytes(b),
-            ('f', _) => f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]])),
+            ('f', 8) => Some(f64::from_le_bytes(b)),
+            ('f', _) => Some(f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]]))),
             ('i', size) => signed(8 * size as u32),
-            (_, _) => u64::from_le_bytes(b) as f64,
+            (_, _) => Some(u64::from_le_bytes(b)).filter(|&v| v <= EXACT).map(|v| v as f64),
         }
     }
 }
@@ -196,7 +249,7 @@ mod tests {
         let err = parse(&npy("<c16", "(1, 2)", false, &[0; 32])).unwrap_err().to_string();
         assert!(err.contains("dtype '<c16'"), "{err}");
         let err = parse(&npy("<f8", "(2, 2)", false, &[0; 20])).unwrap_err().to_string();
-        assert!(err.contains("end before the 2 x 2 values"), "{err}");
+        assert!(err.contains("end after 2 of the 2 x 2 values"), "{err}");
         let nan: Vec<u8> = [0.0, f64::NAN].iter().flat_map(|v| v.to_le_bytes()).collect();
         assert!(parse(&npy("<f8", "(1, 2)", false, &nan))
             .unwrap_err()
@@ -204,5 +257,31 @@ mod tests {
             .contains("row 0"));
         let many = read(&npy("<f8", "(2, 2)", false, &[0; 32])[..], "t.npy", 1).unwrap_err();
         assert!(many.to_string().contains("more than 1 points"), "{many}");
+    }
+
+    #[test]
+    fn a_header_cannot_make_the_reader_allocate_or_overflow() {
+        // Issue 30, G5: 10^8 rows announced and no data; 2^60 rows with a raised limit.
+        let header = npy("<f8", "(100000000, 2)", false, &[]);
+        let err = read(&header[..], "t.npy", usize::MAX).unwrap_err().to_string();
+        assert!(err.contains("end after 0 of the 100000000 x 2 values"), "{err}");
+        let header = npy("<f8", "(1152921504606846976, 2)", false, &[0; 64]);
+        let err = read(&header[..], "t.npy", usize::MAX).unwrap_err().to_string();
+        assert!(err.contains("end after 8 of the 1152921504606846976 x 2"), "{err}");
+        let header = npy("<f8", "(18446744073709551615, 2)", false, &[]);
+        assert!(read(&header[..], "t.npy", usize::MAX).is_err());
+    }
+
+    #[test]
+    fn integers_a_float64_cannot_hold_are_refused() {
+        // Issue 30, G26: they were rounded silently.
+        let big: Vec<u8> = [(1i64 << 53) + 1, 0].iter().flat_map(|v| v.to_le_bytes()).collect();
+        let err = parse(&npy("<i8", "(1, 2)", false, &big)).unwrap_err().to_string();
+        assert!(err.contains("row 0: an integer beyond 2^53"), "{err}");
+        let fine: Vec<u8> = [1i64 << 53, -(1 << 53)].iter().flat_map(|v| v.to_le_bytes()).collect();
+        assert_eq!(
+            parse(&npy("<i8", "(1, 2)", false, &fine)).unwrap(),
+            [[9007199254740992.0, -9007199254740992.0]]
+        );
     }
 }
