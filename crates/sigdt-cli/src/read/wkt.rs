@@ -7,19 +7,34 @@
 //! `EMPTY`, with `Z`, `M` or `ZM` coordinates (only x and y are kept), keywords in any case,
 //! and an optional EWKT `SRID=n;` prefix. A polygon ring's closing vertex repeats its first
 //! and is dropped, so a ring of `k + 1` coordinates gives `k` points. `#` starts a comment
-//! to the end of the line, as in sigdt's plain files.
+//! to the end of the line, as in sigdt's plain files, and a UTF-8 byte-order mark may
+//! start the file. Only ASCII white space separates, as in plain files: any other
+//! character, such as a no-break space (U+00A0), belongs to a token and is refused with it.
 //!
 //! # Errors
-//! The file and the line of the first token that does not fit, saying what was expected.
+//! The file and the line of the first token that does not fit, saying what was expected;
+//! input is shown through [`sigdt::io::quoted`] (control characters escaped, long tokens
+//! cut). Also refused, with the file and line: a token that is not UTF-8 text (comments are
+//! not checked), a token longer than [`MAX_LINE`] bytes, `GEOMETRYCOLLECTION`s nested more
+//! than [`MAX_DEPTH`] deep, and a failed read. More than `max_points` points stop the
+//! reading at the first point over.
 //!
 //! # Complexity
-//! O(length of the text); the text is read whole.
+//! O(length of the text) time. The text is streamed, token by token: memory is the points
+//! plus the longest token (at most [`MAX_LINE`] bytes), however long the text or its lines.
 
-use std::io::Read;
+use std::io::{BufRead, ErrorKind};
 
-use anyhow::{bail, Result};
-use sigdt::io::{wkt_geometry, WKT_GEOMETRIES};
+use anyhow::{anyhow, Result};
+use sigdt::io::{quoted, wkt_geometry, MAX_LINE, WKT_GEOMETRIES};
 use sigdt::Point;
+
+/// The deepest nesting of `GEOMETRYCOLLECTION`s read, as deep as the GeoJSON reader (and
+/// serde_json) goes: the parser recurses once a level, and the stack is finite.
+const MAX_DEPTH: usize = 128;
+
+/// The UTF-8 byte-order mark.
+const BOM: &[u8] = b"\xEF\xBB\xBF";
 
 /// Whether `line` starts like WKT: an EWKT `SRID=` prefix, or a geometry as the kernel's
 /// reader recognises it ([`sigdt::io::wkt_geometry`]).
@@ -29,120 +44,237 @@ pub fn starts_wkt(line: &str) -> bool {
 }
 
 /// The points of the WKT text of `reader`; see the module docs.
-pub fn read(mut reader: impl Read, name: &str, max_points: usize) -> Result<Vec<Point>> {
-    let mut text = String::new();
-    if reader.read_to_string(&mut text).is_err() {
-        bail!("{name}: not UTF-8 text (WKT is text)");
-    }
-    let mut parser = Parser { tokens: tokens(&text), at: 0, name, points: Vec::new(), max_points };
+pub fn read(reader: impl BufRead, name: &str, max_points: usize) -> Result<Vec<Point>> {
+    let tokens = Tokens::new(reader, name)?;
+    let mut parser = Parser { tokens, points: Vec::new(), max_points, depth: 0 };
     while parser.peek().is_some() {
         parser.geometry()?;
-        if parser.peek().map(|t| t.text) == Some(",") {
-            parser.at += 1;
-        }
+        parser.eat(",")?;
     }
     Ok(parser.points)
 }
 
-/// A token: a word, a number, `(`, `)`, `,` or `;`/`=` of an SRID prefix, with its line.
-#[derive(Debug, Clone, Copy)]
-struct Token<'a> {
-    text: &'a str,
-    line: usize,
+/// The error for a failed read on line `line` of `name`.
+fn read_error(name: &str, line: usize, e: std::io::Error) -> anyhow::Error {
+    anyhow!("{name}:{line}: WKT: cannot read: {e}")
 }
 
-/// The tokens of `text`, comments removed.
-fn tokens(text: &str) -> Vec<Token<'_>> {
-    let mut out = Vec::new();
-    for (k, line) in text.lines().enumerate() {
-        let line_text = line.split('#').next().unwrap_or("");
-        let mut rest = line_text;
-        while let Some(start) = rest.find(|c: char| !c.is_whitespace()) {
-            rest = &rest[start..];
-            let len = if rest.starts_with(['(', ')', ',', ';', '=']) {
-                1
-            } else {
-                rest.find(|c: char| c.is_whitespace() || "(),;=".contains(c)).unwrap_or(rest.len())
-            };
-            out.push(Token { text: &rest[..len], line: k + 1 });
-            rest = &rest[len..];
+/// Whether `byte` ends a word: ASCII white space, a comment or a symbol.
+fn ends_word(byte: u8) -> bool {
+    byte.is_ascii_whitespace() || byte == b'#' || is_symbol(byte)
+}
+
+/// Whether `byte` is a token by itself: `(`, `)`, `,`, or `;`/`=` of an SRID prefix.
+fn is_symbol(byte: u8) -> bool {
+    matches!(byte, b'(' | b')' | b',' | b';' | b'=')
+}
+
+/// The tokens of a WKT text, read from the stream as the parser asks for them: only the
+/// current one is held. A token is a word (a keyword or a number) or a symbol.
+struct Tokens<'a, R> {
+    reader: R,
+    name: &'a str,
+    /// The current token; empty at the end of the text.
+    token: String,
+    /// The line of the current token (of the last one at the end).
+    line: usize,
+    /// The line the reader is on.
+    reader_line: usize,
+    /// Whether nothing has been read yet: a byte-order mark may come.
+    at_start: bool,
+    /// Whether the reader has reported the end: it is not asked again (a terminal would wait
+    /// for a second end-of-file).
+    eof: bool,
+}
+
+impl<'a, R: BufRead> Tokens<'a, R> {
+    /// The tokens of `reader`, on the first one.
+    fn new(reader: R, name: &'a str) -> Result<Self> {
+        let token = String::new();
+        let mut tokens =
+            Tokens { reader, name, token, line: 1, reader_line: 1, at_start: true, eof: false };
+        tokens.advance()?;
+        Ok(tokens)
+    }
+
+    /// The current token; `None` at the end of the text.
+    fn current(&self) -> Option<&str> {
+        (!self.token.is_empty()).then_some(self.token.as_str())
+    }
+
+    /// An error on the current token's line.
+    fn error(&self, message: impl std::fmt::Display) -> anyhow::Error {
+        anyhow!("{}:{}: WKT: {message}", self.name, self.line)
+    }
+
+    /// Moves to the next token.
+    fn advance(&mut self) -> Result<()> {
+        // The current token's buffer is reused: no allocation a token.
+        let mut bytes = std::mem::take(&mut self.token).into_bytes();
+        loop {
+            bytes.clear();
+            self.skip_separators()?;
+            let at_start = self.at_start;
+            self.read_token(&mut bytes)?;
+            if at_start && bytes.starts_with(BOM) {
+                bytes.drain(..BOM.len());
+            }
+            // Empty only at the end, or after a lone byte-order mark.
+            if !bytes.is_empty() || self.eof {
+                break;
+            }
+        }
+        self.token = String::from_utf8(bytes).map_err(|_| self.error("not UTF-8 text"))?;
+        Ok(())
+    }
+
+    /// Skips white space and comments, counting lines.
+    fn skip_separators(&mut self) -> Result<()> {
+        let mut in_comment = false;
+        loop {
+            let chunk = self.fill()?;
+            let (mut used, mut newlines, mut found) = (0, 0, false);
+            for &byte in chunk {
+                match byte {
+                    b'\n' => (newlines, in_comment) = (newlines + 1, false),
+                    b'#' => in_comment = true,
+                    _ if in_comment || byte.is_ascii_whitespace() => {}
+                    _ => {
+                        // A token starts here.
+                        (found, self.line) = (true, self.reader_line + newlines);
+                        break;
+                    }
+                }
+                used += 1;
+            }
+            self.consume(used);
+            self.reader_line += newlines;
+            if found || self.eof {
+                return Ok(());
+            }
         }
     }
-    out
+
+    /// Reads the token that starts here into `bytes` (nothing at the end), refusing one
+    /// longer than [`MAX_LINE`] before it is held.
+    fn read_token(&mut self, bytes: &mut Vec<u8>) -> Result<()> {
+        loop {
+            let chunk = self.fill()?;
+            if chunk.is_empty() {
+                return Ok(());
+            }
+            if bytes.is_empty() && is_symbol(chunk[0]) {
+                bytes.push(chunk[0]);
+                self.consume(1);
+                return Ok(());
+            }
+            let word = chunk.iter().position(|&b| ends_word(b)).unwrap_or(chunk.len());
+            let ended = word < chunk.len();
+            if bytes.len() + word > MAX_LINE {
+                return Err(self.error(format!("token longer than {MAX_LINE} bytes")));
+            }
+            bytes.extend_from_slice(&chunk[..word]);
+            self.consume(word);
+            if ended {
+                return Ok(());
+            }
+        }
+    }
+
+    /// The reader's buffered bytes, refilled if empty; empty at the end.
+    fn fill(&mut self) -> Result<&[u8]> {
+        if self.eof {
+            return Ok(&[]);
+        }
+        loop {
+            match self.reader.fill_buf() {
+                Ok([]) => {
+                    self.eof = true;
+                    return Ok(&[]);
+                }
+                Ok(_) => break,
+                Err(e) if e.kind() == ErrorKind::Interrupted => {}
+                Err(e) => return Err(read_error(self.name, self.reader_line, e)),
+            }
+        }
+        // Again, to return the bytes (the borrow checker refuses returning them from the
+        // loop); a non-empty buffer is returned without reading.
+        let (name, line) = (self.name, self.reader_line);
+        self.reader.fill_buf().map_err(|e| read_error(name, line, e))
+    }
+
+    fn consume(&mut self, amount: usize) {
+        self.reader.consume(amount);
+        self.at_start &= amount == 0;
+    }
 }
 
-struct Parser<'a> {
-    tokens: Vec<Token<'a>>,
-    at: usize,
-    name: &'a str,
+struct Parser<'a, R> {
+    tokens: Tokens<'a, R>,
     points: Vec<Point>,
     max_points: usize,
+    /// How many `GEOMETRYCOLLECTION`s are open.
+    depth: usize,
 }
 
-impl<'a> Parser<'a> {
-    fn peek(&self) -> Option<Token<'a>> {
-        self.tokens.get(self.at).copied()
+impl<R: BufRead> Parser<'_, R> {
+    fn peek(&self) -> Option<&str> {
+        self.tokens.current()
     }
 
     fn error(&self, expected: &str) -> anyhow::Error {
         match self.peek() {
-            Some(t) => anyhow::anyhow!(
-                "{}:{}: WKT: expected {expected}, found '{}'",
-                self.name,
-                t.line,
-                t.text
-            ),
-            None => anyhow::anyhow!("{}: WKT: expected {expected}, found the end", self.name),
+            Some(t) => self.tokens.error(format!("expected {expected}, found {}", quoted(t))),
+            None => self.tokens.error(format!("expected {expected}, found the end")),
         }
     }
 
     fn expect(&mut self, symbol: &str) -> Result<()> {
-        if self.peek().map(|t| t.text) == Some(symbol) {
-            self.at += 1;
-            Ok(())
+        if self.peek() == Some(symbol) {
+            self.tokens.advance()
         } else {
             Err(self.error(&format!("'{symbol}'")))
         }
     }
 
-    /// Consumes `symbol` if it is next.
-    fn eat(&mut self, symbol: &str) -> bool {
-        let next = self.peek().is_some_and(|t| t.text.eq_ignore_ascii_case(symbol));
-        self.at += usize::from(next);
-        next
+    /// Consumes `symbol` (in any case) if it is next.
+    fn eat(&mut self, symbol: &str) -> Result<bool> {
+        let next = self.peek().is_some_and(|t| t.eq_ignore_ascii_case(symbol));
+        if next {
+            self.tokens.advance()?;
+        }
+        Ok(next)
     }
 
     /// `[SRID=n;] KEYWORD [Z|M|ZM] (EMPTY | body)`.
     fn geometry(&mut self) -> Result<()> {
-        if self.peek().is_some_and(|t| t.text.eq_ignore_ascii_case("SRID")) {
-            self.at += 1;
+        if self.eat("SRID")? {
             self.expect("=")?;
-            if !self.peek().is_some_and(|t| t.text.parse::<u32>().is_ok()) {
+            if !self.peek().is_some_and(|t| t.parse::<u32>().is_ok()) {
                 return Err(self.error("an SRID number"));
             }
-            self.at += 1;
+            self.tokens.advance()?;
             self.expect(";")?;
         }
-        let keyword = match self.peek() {
-            Some(t) => WKT_GEOMETRIES.iter().find(|k| t.text.eq_ignore_ascii_case(k)).copied(),
-            None => None,
-        };
+        let keyword = self
+            .peek()
+            .and_then(|t| WKT_GEOMETRIES.iter().find(|k| t.eq_ignore_ascii_case(k)).copied());
         let Some(keyword) = keyword else {
             return Err(self.error("a WKT geometry (POINT, MULTIPOINT, LINESTRING, POLYGON, ...)"));
         };
-        self.at += 1;
+        self.tokens.advance()?;
         for dimension in ["ZM", "Z", "M"] {
-            if self.eat(dimension) {
+            if self.eat(dimension)? {
                 break;
             }
         }
-        if self.eat("EMPTY") {
+        if self.eat("EMPTY")? {
             return Ok(());
         }
         match keyword {
             "POINT" => self.parenthesised(Self::coordinate),
             "MULTIPOINT" => self.list(|p| {
-                if p.peek().map(|t| t.text) == Some("(") {
+                if p.peek() == Some("(") {
                     p.parenthesised(Self::coordinate)
                 } else {
                     p.coordinate()
@@ -152,8 +284,21 @@ impl<'a> Parser<'a> {
             "POLYGON" => self.list(Self::ring),
             "MULTILINESTRING" => self.list(|p| p.list(Self::coordinate)),
             "MULTIPOLYGON" => self.list(|p| p.list(Self::ring)),
-            _ => self.list(Self::geometry),
+            _ => self.collection(),
         }
+    }
+
+    /// The body of a `GEOMETRYCOLLECTION`: `( geometry {, geometry} )`, at most
+    /// [`MAX_DEPTH`] deep.
+    fn collection(&mut self) -> Result<()> {
+        if self.depth == MAX_DEPTH {
+            let message = format!("GEOMETRYCOLLECTION nested more than {MAX_DEPTH} deep");
+            return Err(self.tokens.error(message));
+        }
+        self.depth += 1;
+        self.list(Self::geometry)?;
+        self.depth -= 1;
+        Ok(())
     }
 
     /// `( item )`.
@@ -167,12 +312,10 @@ impl<'a> Parser<'a> {
     fn list(&mut self, mut item: impl FnMut(&mut Self) -> Result<()>) -> Result<()> {
         self.expect("(")?;
         loop {
-            if !self.eat("EMPTY") {
+            if !self.eat("EMPTY")? {
                 item(self)?;
             }
-            if self.peek().map(|t| t.text) == Some(",") {
-                self.at += 1;
-            } else {
+            if !self.eat(",")? {
                 return self.expect(")");
             }
         }
@@ -190,29 +333,23 @@ impl<'a> Parser<'a> {
 
     /// `x y [z [m]]`: x and y kept.
     fn coordinate(&mut self) -> Result<()> {
-        let mut values = Vec::with_capacity(4);
-        while let Some(t) = self.peek() {
-            match t.text.parse::<f64>() {
-                Ok(v) if values.len() < 4 => {
-                    if !v.is_finite() {
-                        bail!(
-                            "{}:{}: WKT: coordinate '{}' is not finite",
-                            self.name,
-                            t.line,
-                            t.text
-                        );
-                    }
-                    values.push(v);
-                    self.at += 1;
-                }
-                _ => break,
+        let (mut values, mut count) = ([0.0; 4], 0);
+        while count < 4 {
+            let Some(token) = self.peek() else { break };
+            let Ok(v) = token.parse::<f64>() else { break };
+            if !v.is_finite() {
+                let message = format!("coordinate {} is not finite", quoted(token));
+                return Err(self.tokens.error(message));
             }
+            values[count] = v;
+            count += 1;
+            self.tokens.advance()?;
         }
-        if values.len() < 2 {
+        if count < 2 {
             return Err(self.error("a coordinate 'x y'"));
         }
         if self.points.len() >= self.max_points {
-            return Err(super::too_many(self.name, self.max_points));
+            return Err(super::too_many(self.tokens.name, self.max_points));
         }
         self.points.push([values[0], values[1]]);
         Ok(())
@@ -222,6 +359,7 @@ impl<'a> Parser<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::io::{BufReader, Read};
 
     fn parse(text: &str) -> Result<Vec<Point>> {
         read(text.as_bytes(), "t.wkt", 1000)
@@ -250,8 +388,8 @@ mod tests {
     fn errors_name_the_line_and_what_was_expected() {
         let err = parse("POINT (1 2)\nLINESTRING (1 2, 3)\n").unwrap_err().to_string();
         assert_eq!(err, "t.wkt:2: WKT: expected a coordinate 'x y', found ')'");
-        let err = parse("POINT (1 2").unwrap_err().to_string();
-        assert_eq!(err, "t.wkt: WKT: expected ')', found the end");
+        let err = parse("POINT (1 2\n\n# the end\n").unwrap_err().to_string();
+        assert_eq!(err, "t.wkt:1: WKT: expected ')', found the end", "the last token's line");
         let err = parse("CIRCLE (1 2)").unwrap_err().to_string();
         assert!(err.starts_with("t.wkt:1: WKT: expected a WKT geometry"), "{err}");
         assert!(parse("POINT (1e400 0)").unwrap_err().to_string().contains("not finite"));
@@ -260,9 +398,114 @@ mod tests {
     }
 
     #[test]
+    fn tokens_may_span_reads() {
+        let text = "\u{feff}SRID=4326;MULTIPOINT ((0 0), (1 0)) # caf\u{e9}\r\n\
+                    POLYGON ((0 1, 1 1, 1 2, 0 1)), point zm (12345.5 -6e2 7 8)\n";
+        let byte_by_byte =
+            |text: &str| read(BufReader::with_capacity(1, text.as_bytes()), "t.wkt", 9);
+        assert_eq!(byte_by_byte(text).unwrap(), parse(text).unwrap());
+        assert_eq!(parse(text).unwrap().len(), 6);
+        let err = byte_by_byte("POINT (0 0)\n\n  POINT (1 \u{e9})").unwrap_err().to_string();
+        assert_eq!(err, "t.wkt:3: WKT: expected a coordinate 'x y', found '\u{e9}'");
+    }
+
+    #[test]
     fn wkt_is_told_from_headers() {
         assert!(starts_wkt("MultiPoint ((1 2))") && starts_wkt("POINT ZM (1 2 3 4)"));
         assert!(starts_wkt("srid=3857;POINT(1 2)") && starts_wkt("POLYGON EMPTY"));
         assert!(!starts_wkt("point x") && !starts_wkt("x,y") && !starts_wkt("1 2"));
+    }
+
+    /// `depth` GEOMETRYCOLLECTIONs around one point.
+    fn nested(depth: usize) -> String {
+        let open = "GEOMETRYCOLLECTION (".repeat(depth);
+        format!("{open}POINT (0 0){}", ")".repeat(depth))
+    }
+
+    #[test]
+    fn collections_nest_at_most_128_deep() {
+        assert_eq!(parse(&nested(128)).unwrap(), [[0.0, 0.0]]);
+        let err = parse(&nested(129)).unwrap_err().to_string();
+        assert_eq!(err, "t.wkt:1: WKT: GEOMETRYCOLLECTION nested more than 128 deep");
+        // Without the limit, this overflowed the stack.
+        assert!(parse(&nested(400_000)).unwrap_err().to_string().contains("nested more than"));
+    }
+
+    /// `MULTIPOINT (` and then `1 1,` for ever, as `yes` gives it.
+    struct Endless {
+        served: usize,
+    }
+
+    impl Read for Endless {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            // Only a reader that does not stop gets here; fail rather than fill the memory.
+            assert!(self.served < 16 << 20, "read past 16 MiB: reading must stop at point 6");
+            const HEAD: &[u8] = b"MULTIPOINT (";
+            for byte in buf.iter_mut() {
+                *byte = match HEAD.get(self.served) {
+                    Some(&b) => b,
+                    None => b"1 1,"[(self.served - HEAD.len()) % 4],
+                };
+                self.served += 1;
+            }
+            Ok(buf.len())
+        }
+    }
+
+    #[test]
+    fn an_endless_text_stops_at_the_point_over_the_limit() {
+        let mut endless = Endless { served: 0 };
+        let err = read(BufReader::new(&mut endless), "t.wkt", 5).unwrap_err();
+        assert_eq!(err.to_string(), "t.wkt: more than 5 points (raise --max-points to read more)");
+        assert!(endless.served <= 1 << 16, "read {} bytes", endless.served);
+    }
+
+    #[test]
+    fn reading_errors_name_the_file_and_line() {
+        let text = b"POINT (1 2)\n# caf\xe9: a comment may hold anything\nPOINT (\xff 1)\n";
+        let err = read(&text[..], "t.wkt", 10).unwrap_err().to_string();
+        assert_eq!(err, "t.wkt:3: WKT: not UTF-8 text");
+        let ok = read(&text[..text.len() - 13], "t.wkt", 10).unwrap();
+        assert_eq!(ok, [[1.0, 2.0]], "a comment is not checked");
+
+        struct Failing;
+        impl Read for Failing {
+            fn read(&mut self, _: &mut [u8]) -> std::io::Result<usize> {
+                Err(std::io::Error::other("disk on fire"))
+            }
+        }
+        let err = read(BufReader::new(Failing), "t.wkt", 10).unwrap_err();
+        assert_eq!(err.to_string(), "t.wkt:1: WKT: cannot read: disk on fire");
+    }
+
+    #[test]
+    fn a_token_longer_than_a_mebibyte_is_refused() {
+        let text = format!("POINT ({} 0)", "1".repeat(sigdt::io::MAX_LINE + 1));
+        let err = parse(&text).unwrap_err().to_string();
+        assert_eq!(err, "t.wkt:1: WKT: token longer than 1048576 bytes");
+    }
+
+    #[test]
+    fn input_in_messages_is_quoted() {
+        let err = parse("POINT (1 \x1b[2J)").unwrap_err().to_string();
+        assert_eq!(err, r"t.wkt:1: WKT: expected a coordinate 'x y', found '\u{1b}[2J'");
+        let err = parse(&format!("CIRCLE{}", "x".repeat(50_000))).unwrap_err().to_string();
+        assert!(err.len() < 200 && err.ends_with("(50006 characters)"), "{err}");
+        let err = parse("POINT (1e400 0)").unwrap_err().to_string();
+        assert_eq!(err, "t.wkt:1: WKT: coordinate '1e400' is not finite");
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_skipped() {
+        let points = parse("\u{feff}MULTIPOINT ((0 0),(1 0),(1 1))").unwrap();
+        assert_eq!(points, [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]);
+        assert!(parse("POINT (0 0)\n\u{feff}POINT (1 1)").is_err(), "only at the start");
+    }
+
+    #[test]
+    fn only_ascii_white_space_separates() {
+        let err = parse("MULTIPOINT (0 0,\n1\u{a0}1)").unwrap_err().to_string();
+        assert_eq!(err, r"t.wkt:2: WKT: expected a coordinate 'x y', found '1\u{a0}1'");
+        assert_eq!(parse("POINT\t(1\r\n2)\x0c").unwrap(), [[1.0, 2.0]]);
     }
 }
