@@ -13,6 +13,8 @@ use crate::geometry::{Edge, Point};
 /// The kNN graph of the triangulation's distinct points as sorted input-index pairs.
 pub(crate) fn knn(dt: &Triangulation, k: usize) -> Vec<Edge> {
     let points: Vec<Point> = (0..dt.num_vertices() as u32).map(|v| dt.point(v)).collect();
+    // No point has more than the others as neighbours; this also keeps `k + 8` finite.
+    let k = k.min(points.len().saturating_sub(1));
     let tree = KdTree::new(&points);
     let mut pairs = Vec::with_capacity(points.len() * k);
     for v in 0..points.len() as u32 {
@@ -35,5 +37,19 @@ mod tests {
         let dt = Triangulation::new(&[[0.0, 0.0], [1.0, 0.0], [3.0, 0.0], [6.0, 0.0]]).unwrap();
         assert_eq!(knn(&dt, 1), vec![[0, 1], [1, 2], [2, 3]]);
         assert_eq!(knn(&dt, 2), vec![[0, 1], [0, 2], [1, 2], [1, 3], [2, 3]]);
+    }
+
+    #[test]
+    fn a_huge_k_is_all_the_other_points_or_refused() {
+        // Issue 30, G6: k = 10^9 allocated 800 GB, k = 2^64 - 1 overflowed.
+        let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let all = vec![[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
+        for k in [3, 1_000_000_000, usize::MAX] {
+            let edges = crate::proximity_graph(&square, crate::GraphKind::Knn { k }).unwrap();
+            assert_eq!(edges, all, "k = {k}");
+        }
+        let line: Vec<Point> = (0..20_000).map(|i| [f64::from(i), 0.0]).collect();
+        let err = crate::proximity_graph(&line, crate::GraphKind::Knn { k: 10_000 }).unwrap_err();
+        assert!(err.to_string().contains("at most 100000000 are built"), "{err}");
     }
 }

@@ -80,10 +80,27 @@ impl fmt::Display for GraphKind {
     }
 }
 
+/// The most neighbour pairs `n · k` the kNN graph is built with (about 2 GB at its peak):
+/// a larger request is refused rather than allowed to exhaust memory.
+pub const MAX_KNN_PAIRS: usize = 100_000_000;
+
 /// The edges of a proximity graph on `points`, as sorted input-index pairs `[i, j]`, `i < j`.
-/// Exact duplicates get no edges (their lowest-index representative stands for them).
+/// Exact duplicates get no edges (their lowest-index representative stands for them). For
+/// the kNN graph, `k` beyond the other distinct points counts as all of them, and an `n · k`
+/// above [`MAX_KNN_PAIRS`] is an [`Error::InvalidOption`].
 pub fn proximity_graph(points: &[Point], kind: GraphKind) -> Result<Vec<Edge>> {
     let dt = Triangulation::new(points)?;
+    if let GraphKind::Knn { k } = kind {
+        let n = dt.num_vertices();
+        let k = k.min(n.saturating_sub(1));
+        if n.saturating_mul(k) > MAX_KNN_PAIRS {
+            return Err(Error::InvalidOption(format!(
+                "knn with k = {k} on {n} distinct points asks for {} neighbour pairs; at most \
+                 {MAX_KNN_PAIRS} are built (choose a smaller k)",
+                n.saturating_mul(k)
+            )));
+        }
+    }
     Ok(proximity_graph_on(&dt, kind))
 }
 
