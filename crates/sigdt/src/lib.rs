@@ -47,7 +47,9 @@ pub use method::{
     reconstruct, reconstruct_on, reconstruct_owned, reconstruct_traced, reconstruct_traced_on,
     Method, Options,
 };
-pub use proximity::{nearest_neighbour_distances, proximity_graph, proximity_graph_on, GraphKind};
+pub use proximity::{
+    nearest_neighbour_distances, proximity_graph, proximity_graph_on, GraphKind, MAX_KNN_PAIRS,
+};
 pub use result::{
     Finding, FindingKind, LeftOut, LeftOutReason, Polygon, Reconstruction, Stats, Status, Vertices,
     AREA_TOLERANCE, DEPTH_RATIO, LONG_EDGE_RATIO, MIN_LOOP_POINTS, STRAY_DEPTH_RATIO,
