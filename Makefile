@@ -130,6 +130,8 @@ bench: build
 	  --cgal $(CGAL_TOOL) --cli $(SIGDT)
 	$(CARGO) run --release --locked -p sigdt --example methods -- --sizes 1e3,1e4,1e5 \
 	  --methods sig-connect2d,fit-connect,stretch-denoise,discur,optimal-transport --limit 30
+	$(CARGO) run --release --locked -p sigdt --example methods -- --input scatter \
+	  --sizes 1e4,2e4,4e4,8e4 --methods sig-auto --limit 30
 
 ## man: the man pages of sigdt and its subcommands in target/man (from the clap definitions;
 ## `man -l target/man/sigdt.1`). Shell completions: `sigdt completions bash|zsh|fish`.

@@ -3,17 +3,20 @@
 //! ```text
 //! cargo run --release -p sigdt --example methods                    # n = 1e3, 1e4, 1e5
 //! cargo run --release -p sigdt --example methods -- --sizes 1e3,1e6 --methods sig-auto
+//! cargo run --release -p sigdt --example methods -- --input scatter --methods sig-auto
 //! ```
 //!
 //! Input: [`random_closed_curve`]`(1, n)` shuffled with seed 7 (a smooth blob sampled
-//! uniformly, no curve order in the input). For each size the methods run in turn, `R` times
+//! uniformly, no curve order in the input), or with `--input scatter` `n` points uniform at
+//! random in the unit square (seed 7): no curve at all, the worst case SIG-AUTO's outlier
+//! rules were found to have (`docs/reliability.md`). For each size the methods run in turn, `R` times
 //! (after one warm-up; the calls alternate so machine noise hits all alike; `R` = 5, or 1 for
 //! calls over a second), single-threaded. Reported: the median time, and the median over the
 //! rounds of the time over SIG-CONNECT2D's time in the same round. A method whose single run takes longer than
 //! the limit (`--limit SECONDS`, default 30) is not run at larger sizes: its later cells say
 //! `over limit`. `growth` is the time ratio between consecutive sizes divided by the size
 //! ratio (1.0 = linear).
-use sigdt::samplers::random_closed_curve;
+use sigdt::samplers::{random_closed_curve, Rng};
 use sigdt::{Method, Options};
 use std::error::Error;
 use std::hint::black_box;
@@ -22,6 +25,11 @@ use std::time::Instant;
 fn main() -> Result<(), Box<dyn Error>> {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let value = |flag: &str| args.iter().position(|a| a == flag).and_then(|i| args.get(i + 1));
+    let scatter = match value("--input").map(String::as_str) {
+        None | Some("curve") => false,
+        Some("scatter") => true,
+        Some(other) => return Err(format!("--input: '{other}' is not curve or scatter").into()),
+    };
     let sizes: Vec<usize> = match value("--sizes") {
         Some(list) => list
             .split(',')
@@ -42,7 +50,13 @@ fn main() -> Result<(), Box<dyn Error>> {
     let mut stopped = vec![false; methods.len()];
     let mut previous: Vec<Option<(usize, f64)>> = vec![None; methods.len()];
     for &n in &sizes {
-        let points = random_closed_curve(1, n).shuffled(7).points;
+        let points = match scatter {
+            true => {
+                let mut rng = Rng::new(7);
+                (0..n).map(|_| [rng.uniform(), rng.uniform()]).collect()
+            }
+            false => random_closed_curve(1, n).shuffled(7).points,
+        };
         let run = |method: Method| -> f64 {
             let options = Options { method, ..Options::default() };
             let start = Instant::now();

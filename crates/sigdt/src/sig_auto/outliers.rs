@@ -53,12 +53,19 @@ pub(crate) fn branch_outliers(
             continue;
         }
         let (mut members, mut anchor) = (vec![start], None);
+        // The longest tree edge between two members: off the path, a tree neighbour of a
+        // member is a member.
+        let mut inner = 0.0f64;
         let mut k = 0;
         while k < members.len() {
-            for w in neighbours(members[k]) {
+            let v = members[k];
+            for w in neighbours(v) {
                 if let Some(&i) = position.get(&w) {
                     anchor = Some(i);
-                } else if !std::mem::replace(&mut in_branch[w as usize], true) {
+                    continue;
+                }
+                inner = inner.max(distance(dt.point(v), dt.point(w)));
+                if !std::mem::replace(&mut in_branch[w as usize], true) {
                     members.push(w);
                 }
             }
@@ -79,7 +86,6 @@ pub(crate) fn branch_outliers(
             near.fold(distance(q, pa), f64::min)
         };
         let nearest = members.iter().map(|&o| off(o)).fold(f64::INFINITY, f64::min);
-        let inner = longest_inner_edge(dt, &members, &neighbours);
         if spacing > 0.0
             && nearest > spacing * (1.0 + TIE_SLACK)
             && !(steps.own_curves && own_curve(members.len(), inner, nearest))
@@ -98,21 +104,6 @@ fn continuation_distance(steps: &Steps, q: Point, from: Point, through: Point) -
         true => ray_distance(q, from, through),
         false => f64::INFINITY,
     }
-}
-
-/// The longest tree edge between two members of a branch (0 for a single vertex).
-fn longest_inner_edge(
-    dt: &Triangulation,
-    members: &[u32],
-    neighbours: &impl Fn(u32) -> Vec<u32>,
-) -> f64 {
-    let mut inner = 0.0f64;
-    for &v in members {
-        for w in neighbours(v).into_iter().filter(|w| members.contains(w)) {
-            inner = inner.max(distance(dt.point(v), dt.point(w)));
-        }
-    }
-    inner
 }
 
 /// Whether `count` points that lie at least `off` from the curve, joined among themselves by
@@ -236,7 +227,20 @@ fn detour(
         return None;
     }
     let (pa, pb, pa_beyond) = (reading.point(a), reading.point(b), reading.point(a_beyond));
-    let (ab, a_side) = (reading.length(a, b), reading.length(a, a_beyond));
+    let ab = reading.length(a, b);
+    let regular = |v: u32| match reading.neighbours(v) {
+        [x, y] if x != NONE && y != NONE => u_below_2(reading.length(v, x), reading.length(v, y)),
+        _ => true,
+    };
+    // Whether `ab` continues the reading beyond `end` into `beyond` (checked before the walk
+    // for `a`, and for both candidates beyond `b`, so that most pairs need no walk).
+    let continues_into = |end: u32, beyond: u32| {
+        beyond != NONE && u_below_2(ab, reading.length(end, beyond)) && regular(beyond)
+    };
+    if !continues_into(a, a_beyond) || !reading.neighbours(b).iter().any(|&x| continues_into(b, x))
+    {
+        return None;
+    }
     // Distance from a run vertex to the shortcut and to the continuation beyond `a`; a vertex
     // within the spacing ends the walk, as it could never be cut out.
     let near_a = |v: u32| {
@@ -245,9 +249,32 @@ fn detour(
     };
     let mut run = Vec::new();
     let (mut previous, mut v) = (a, first);
+    // Links shorter than `ab` in a row: shorter than the run's distance to the curve too
+    // (a detour's exceeds `ab`), so OWN_CURVE_POINTS of them make the run a curve of its
+    // own and end the walk, which keeps it short on a scatter, where the reading is long
+    // and no run is a detour.
+    let mut short_stretch = 1;
+    // The other way round from `a`, in step: on a loop it reaches `b` after the vertices
+    // outside the run, which must outnumber the run ([`outnumbered`]), so the run's walk
+    // ends there too.
+    let (mut rest_previous, mut rest_v, mut rest) = (a, a_beyond, 1);
+    let mut rest_bound = usize::MAX;
     while v != b {
-        if v == NONE || v == a || near_a(v) <= ab {
+        if v == NONE || v == a || near_a(v) <= ab || run.len() + 1 >= rest_bound {
             return None;
+        }
+        if rest_bound == usize::MAX && rest_v != NONE {
+            rest += 1;
+            if rest_v == b {
+                rest_bound = rest;
+            }
+            (rest_previous, rest_v) = (rest_v, reading.other(rest_v, rest_previous));
+        }
+        if let Some(&last) = run.last() {
+            short_stretch = if reading.length(last, v) < ab { short_stretch + 1 } else { 1 };
+            if steps.own_curves && short_stretch >= OWN_CURVE_POINTS {
+                return None;
+            }
         }
         run.push(v);
         let next = reading.other(v, previous);
@@ -257,13 +284,7 @@ fn detour(
     if run.is_empty() || b_beyond == NONE || b_beyond == a {
         return None;
     }
-    let b_side = reading.length(b, b_beyond);
-    let regular = |v: u32| match reading.neighbours(v) {
-        [x, y] if x != NONE && y != NONE => u_below_2(reading.length(v, x), reading.length(v, y)),
-        _ => true,
-    };
-    let continues =
-        u_below_2(ab, a_side) && u_below_2(ab, b_side) && regular(a_beyond) && regular(b_beyond);
+    let continues = continues_into(b, b_beyond);
     let pb_beyond = reading.point(b_beyond);
     let nearest = run
         .iter()
