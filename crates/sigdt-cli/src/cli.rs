@@ -103,8 +103,8 @@ pub struct Cli {
     #[arg(long, global = true, value_name = "X,Y")]
     pub columns: Option<crate::read::Columns>,
     /// Threads for the data-parallel passes (sorting, nearest neighbours, the SIGDT test);
-    /// by default every core, or RAYON_NUM_THREADS when it is set. The output is the same,
-    /// byte for byte, at every thread count.
+    /// by default every core, or RAYON_NUM_THREADS when it is set; more than the cores count
+    /// as the cores. The output is the same, byte for byte, at every thread count.
     #[arg(long, global = true, value_name = "N",
           value_parser = RangedU64ValueParser::<usize>::new().range(1..=1024))]
     pub threads: Option<usize>,

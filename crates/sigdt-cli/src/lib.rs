@@ -56,15 +56,21 @@ fn run_command(args: impl IntoIterator<Item = OsString>) -> u8 {
     };
     let input = Input::new(cli.max_points, cli.columns.clone());
     output::remove_pending_on_signals();
-    let result = match cli.threads {
-        // A pool of its own, not the global one: the Python package runs this in process.
-        Some(threads) => rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .map_err(anyhow::Error::from)
-            .and_then(|pool| pool.install(|| run_subcommand(cli.command, &input))),
-        None => run_subcommand(cli.command, &input),
-    };
+    // A pool of its own, not the global one: the Python package runs this in process, and
+    // rayon's global pool panics when it cannot start its threads.
+    let result =
+        thread_count(cli.threads, std::env::var_os("RAYON_NUM_THREADS")).and_then(|threads| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .map_err(|e| {
+                    anyhow::anyhow!(
+                        "cannot start {threads} threads ({e}): use fewer with --threads, or \
+                         free memory"
+                    )
+                })
+                .and_then(|pool| pool.install(|| run_subcommand(cli.command, &input)))
+        });
     match result {
         Ok(()) => 0,
         Err(err) => match err.downcast_ref::<UsageError>() {
@@ -75,6 +81,35 @@ fn run_command(args: impl IntoIterator<Item = OsString>) -> u8 {
             }
         },
     }
+}
+
+/// The threads to run on: `--threads`, else `RAYON_NUM_THREADS` (rayon's own variable, 0
+/// meaning every core), else every core; at most the cores, since the output is the same at
+/// every count and more threads only cost memory. A variable that is not a count is a usage
+/// error.
+fn thread_count(flag: Option<usize>, variable: Option<OsString>) -> anyhow::Result<usize> {
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    let wanted = match (flag, variable) {
+        (Some(threads), _) => threads,
+        (None, Some(value)) => match value.to_str().map(str::trim).map(str::parse::<usize>) {
+            Some(Ok(0)) => cores,
+            Some(Ok(threads)) => threads,
+            _ => {
+                return Err(UsageError {
+                    command: "",
+                    kind: clap::error::ErrorKind::InvalidValue,
+                    message: format!(
+                        "RAYON_NUM_THREADS={}: not a thread count (a whole number; 0 or unset \
+                         for every core)",
+                        sigdt::io::quoted(&value.to_string_lossy())
+                    ),
+                }
+                .into())
+            }
+        },
+        (None, None) => cores,
+    };
+    Ok(wanted.min(cores))
 }
 
 fn run_subcommand(command: Command, input: &Input) -> anyhow::Result<()> {

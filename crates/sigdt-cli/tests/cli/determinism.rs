@@ -50,3 +50,25 @@ fn every_thread_count_gives_the_same_output() {
     // A count of 0 is a usage error.
     sigdt_in(dir.path(), &["reconstruct", "curve.xy", "--threads", "0"], None).expect(2);
 }
+
+#[test]
+fn a_huge_or_bad_thread_count_in_the_environment_is_no_crash() {
+    // Issue 30, G14: RAYON_NUM_THREADS=100000 panicked (exit 101) after five seconds.
+    let dir = tempdir();
+    write_points(dir.path(), "square.xy", &square());
+    let run = |value: &str| {
+        let out = sigdt_command()
+            .args(["reconstruct", "square.xy"])
+            .current_dir(dir.path())
+            .env("RAYON_NUM_THREADS", value)
+            .stdin(Stdio::null())
+            .output()
+            .expect("cannot run sigdt");
+        (out.status.code(), String::from_utf8_lossy(&out.stderr).into_owned())
+    };
+    assert_eq!(run("100000"), (Some(0), String::new()));
+    assert_eq!(run("0"), (Some(0), String::new()));
+    let (code, stderr) = run("many");
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(stderr.contains("RAYON_NUM_THREADS='many': not a thread count"), "{stderr}");
+}
