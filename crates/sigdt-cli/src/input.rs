@@ -8,7 +8,6 @@ use std::path::Path;
 use anyhow::Result;
 use sigdt::{Edge, Point};
 
-use crate::messages::UsageError;
 use crate::output::is_dash;
 use crate::read::{self, Columns, Reading};
 
@@ -48,26 +47,19 @@ impl Input {
 }
 
 /// The ground truth of `--gt`, if given, for `n` points (see [`edges_of`]).
-pub fn ground_truth(
-    path: Option<&Path>,
-    n: usize,
-    command: &'static str,
-) -> Result<Option<Vec<Edge>>> {
-    path.map(|path| edges_of(path, n, command, "--gt")).transpose()
+pub fn ground_truth(path: Option<&Path>, n: usize) -> Result<Option<Vec<Edge>>> {
+    path.map(|path| edges_of(path, n, "--gt")).transpose()
 }
 
-/// The edges of the file `path` given as `flag` of `command`, for `n` points: reading stops
-/// at the first index past them or the first line past `3n` edges (an endless file is
-/// refused, not read whole). An index past the points means the file belongs to other
-/// points: a usage error (exit status 2), like any other mismatch of the arguments.
-pub fn edges_of(path: &Path, n: usize, command: &'static str, flag: &str) -> Result<Vec<Edge>> {
+/// The edges of the file `path` given as `flag`, for `n` points: reading stops at the first
+/// index past them or the first line past `3n` edges (an endless file is refused, not read
+/// whole). An index past the points is bad data in that file (exit status 1), named with the
+/// flag, the file and the line.
+pub fn edges_of(path: &Path, n: usize, flag: &str) -> Result<Vec<Edge>> {
     sigdt::io::read_edges_of(path, n).map_err(|err| match &err {
-        sigdt::Error::Parse { message, .. } if is_index_past_the_points(message) => UsageError {
-            command,
-            kind: clap::error::ErrorKind::ArgumentConflict,
-            message: format!("{flag} {err}: it is not a graph on the {n} input points"),
+        sigdt::Error::Parse { message, .. } if is_index_past_the_points(message) => {
+            anyhow::anyhow!("{flag} {err}: it is not a graph on the {n} input points")
         }
-        .into(),
         _ => err.into(),
     })
 }
@@ -95,18 +87,13 @@ mod tests {
     use super::*;
 
     #[test]
-    fn an_index_past_the_points_is_a_usage_error() {
+    fn an_index_past_the_points_is_bad_data_named_with_the_flag() {
+        // Issue 30: a file whose content is wrong is bad data (exit 1), not bad usage.
         let dir = tempfile::tempdir().unwrap();
         let gt = dir.path().join("t.gt");
         std::fs::write(&gt, "0 1\n1 7\n").unwrap();
-        let err = edges_of(&gt, 3, "eval", "--gt").unwrap_err();
-        let usage = err.downcast_ref::<UsageError>().expect("a usage error");
-        assert!(usage.message.starts_with("--gt "), "{}", usage.message);
-        assert!(usage
-            .message
-            .contains("t.gt:2: edge 1 7 refers to point 7, but there are 3 points"));
-        std::fs::write(&gt, "0 x\n").unwrap();
-        let err = edges_of(&gt, 3, "eval", "--gt").unwrap_err();
-        assert!(err.downcast_ref::<UsageError>().is_none(), "a bad line is an error in the file");
+        let message = edges_of(&gt, 3, "--gt").unwrap_err().to_string();
+        assert!(message.starts_with("--gt "), "{message}");
+        assert!(message.contains("t.gt:2: edge 1 7 refers to point 7, but there are 3 points"));
     }
 }

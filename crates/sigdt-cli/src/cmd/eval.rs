@@ -29,11 +29,9 @@ pub struct EvalArgs {
 /// `sigdt eval`.
 pub fn run(args: &EvalArgs, input: &Input) -> Result<()> {
     let points = input.points(&args.input)?;
-    let gt = edges_of(&args.gt, points.len(), "eval", "--gt")?;
+    let gt = edges_of(&args.gt, points.len(), "--gt")?;
     let (label, edges) = match &args.edges {
-        Some(file) => {
-            (file.display().to_string(), edges_of(file, points.len(), "eval", "--edges")?)
-        }
+        Some(file) => (file.display().to_string(), edges_of(file, points.len(), "--edges")?),
         None => {
             let options = Options { method: args.method, ..Options::default() };
             (args.method.to_string(), sigdt::reconstruct(&points, &options)?.edges)

@@ -87,7 +87,7 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     let progress = Stages::new("render");
     progress.stage(format!("reading {}", args.input.display()));
     let points = input.points(&args.input)?;
-    let gt = ground_truth(args.gt.as_deref(), points.len(), "render")?;
+    let gt = ground_truth(args.gt.as_deref(), points.len())?;
     let mut wanted = args.layers.clone();
     if wanted.is_empty() {
         wanted = vec![Layer::Points, Layer::Result];

@@ -61,7 +61,7 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
     if u32::try_from(points.len()).is_err() {
         bail!("{}: the viewer shows at most {} points", args.input.display(), u32::MAX);
     }
-    let gt = ground_truth(args.gt.as_deref(), points.len(), "view")?;
+    let gt = ground_truth(args.gt.as_deref(), points.len())?;
     // One triangulation serves the reconstruction, the graphs and the SIG radii.
     progress.stage(format!("triangulating {} points", thousands(points.len())));
     let dt = Triangulation::new(&points)?;

@@ -39,8 +39,7 @@ fn render_and_view_errors_are_clear() {
     .error(&["no inflating"]);
     fs::write(dir.path().join("bad.gt"), "0 1\n1 9999\n").unwrap();
     let run = sigdt_in(dir.path(), &["view", &xy, "--gt", "bad.gt", "-o", "v.html"], None);
-    run.usage_error();
-    assert!(run.stderr.contains("--gt bad.gt:2:") && run.stderr.contains("9999"), "{run}");
+    run.error(&["--gt bad.gt:2:", "9999"]);
     let run = sigdt_in(dir.path(), &["view", &xy, "-o", "v.txt"], None);
     run.usage_error();
     assert!(run.stderr.contains(".html or .htm"), "{run}");
