@@ -96,6 +96,17 @@ impl Output {
     }
 }
 
+/// Writes `contents` to `path` through a temporary file beside it, renamed over `path` only
+/// once everything is written: a full disk or a signal leaves the previous file (a report's
+/// chart, a gallery picture) as it was, never a truncated one.
+pub fn write_file(path: &Path, contents: &[u8]) -> Result<()> {
+    let dir = match path.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
+    };
+    write_atomically(path, dir, |w| w.write_all(contents))
+}
+
 /// Writes to a temporary file in `dir`, then renames it over `path`.
 fn write_atomically(
     path: &Path,
@@ -206,5 +217,30 @@ fn same_file(a: &Path, b: &Path) -> bool {
     match (fs::canonicalize(a), fs::canonicalize(b)) {
         (Ok(a), Ok(b)) => a == b,
         _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_failed_write_leaves_the_previous_file_whole() {
+        // Issue 30, G24: on a full disk `bench` replaced a chart with a truncated file.
+        let dir = tempfile::tempdir().unwrap();
+        let chart = dir.path().join("accuracy.svg");
+        write_file(&chart, b"<svg>old</svg>").unwrap();
+        let full_disk = |w: &mut dyn Write| {
+            w.write_all(b"<svg>ne")?;
+            Err(io::Error::new(ErrorKind::StorageFull, "No space left on device"))
+        };
+        let err = write_atomically(&chart, dir.path(), full_disk).unwrap_err();
+        assert!(err.to_string().contains("No space left on device"), "{err}");
+        assert_eq!(fs::read(&chart).unwrap(), b"<svg>old</svg>");
+        let left: Vec<_> =
+            fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(left, ["accuracy.svg"], "no temporary file is left behind");
+        write_file(&chart, b"<svg>new</svg>").unwrap();
+        assert_eq!(fs::read(&chart).unwrap(), b"<svg>new</svg>");
     }
 }

@@ -46,7 +46,10 @@ pub struct CaseFiles {
 /// # Errors
 /// [`Error::Io`] when `index.csv` cannot be read, [`Error::Parse`] (file and line) for a
 /// missing `name` or `category` column, a row with too few fields, a name that is not a
-/// file stem, a number that is not a number ≥ 0, or a name listed twice.
+/// file stem (empty, with a path separator, starting with `.`, or with a control character
+/// such as NUL, which would be written into the report), a category with a control
+/// character, a number that is not a number ≥ 0, or a name listed twice. A number given as
+/// nothing, `-`, `nan` or `NaN` is unknown (`None`).
 pub fn read_index(dir: &Path) -> Result<Vec<Case>> {
     let path = dir.join("index.csv");
     let shown = path.display().to_string();
@@ -74,8 +77,15 @@ pub fn read_index(dir: &Path) -> Result<Vec<Case>> {
             return Err(error(line, message));
         }
         let name = fields[name_col].clone();
-        if name.is_empty() || name.contains(['/', '\\']) || name.starts_with('.') {
-            return Err(error(line, format!("'{name}' is not a case name (a file stem)")));
+        let control = |text: &str| text.chars().any(char::is_control);
+        if name.is_empty() || name.contains(['/', '\\']) || name.starts_with('.') || control(&name)
+        {
+            let shown = sigdt::io::quoted(&name);
+            return Err(error(line, format!("{shown} is not a case name (a file stem)")));
+        }
+        if control(&fields[category_col]) {
+            let shown = sigdt::io::quoted(&fields[category_col]);
+            return Err(error(line, format!("{shown} is not a category (a control character)")));
         }
         if !seen.insert(name.clone()) {
             return Err(error(line, format!("case '{name}' is listed twice")));
@@ -262,6 +272,11 @@ mod tests {
         assert!(err.contains("index.csv:1:"), "{err}");
         let err = index("name,category\n../x,open\n").unwrap_err().to_string();
         assert!(err.contains("not a case name"), "{err}");
+        // Issue 30, G19: a NUL was written into results.csv and report.md.
+        let err = index("name,category\na\u{0}b,open\n").unwrap_err().to_string();
+        assert!(err.ends_with(":2: 'a\\u{0}b' is not a case name (a file stem)"), "{err}");
+        let err = index("name,category\nab,op\u{1b}en\n").unwrap_err().to_string();
+        assert!(err.contains("is not a category"), "{err}");
         let err = index("name,category\na,open\n\na,sharp\n").unwrap_err().to_string();
         assert!(err.contains("index.csv:4:") && err.contains("listed twice"), "{err}");
     }

@@ -60,7 +60,7 @@ pub fn manpages(args: &ManpagesArgs) -> Result<()> {
         let mut page = Vec::new();
         clap_mangen::Man::new(command).render(&mut page)?;
         let path = args.out.join(&file);
-        std::fs::write(&path, page).with_context(|| format!("{}: cannot write", path.display()))?;
+        crate::output::write_file(&path, &page)?;
     }
     note(&format!("wrote the man pages to {}", args.out.display()));
     Ok(())

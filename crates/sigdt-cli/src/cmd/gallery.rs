@@ -71,7 +71,7 @@ pub fn run(args: &GalleryArgs) -> Result<()> {
         None => cases(args, &index)?,
     };
     let path = args.out.join("gallery.md");
-    std::fs::write(&path, page).with_context(|| format!("{}: cannot write", path.display()))?;
+    crate::output::write_file(&path, page.as_bytes())?;
     note(&format!("wrote {}", path.display()));
     Ok(())
 }
@@ -214,7 +214,7 @@ fn picture(
     dir: &Path,
 ) -> Result<(String, String)> {
     let files = case.files(&args.data);
-    let points = sigdt::io::read_points(&files.points)?;
+    let points = crate::read::points_of_file(&files.points)?;
     let gt = sigdt::io::read_edges_of(&files.gt, points.len())?;
     let rec = sigdt::reconstruct(&points, &Options { method, ..Options::default() })
         .with_context(|| format!("{method} on {}", case.name))?;
@@ -236,8 +236,7 @@ fn picture(
     };
     let file = dir.join(format!("{}.{method}.svg", case.name));
     let path = args.out.join(&file);
-    std::fs::write(&path, render_svg(&points, &layers, &options))
-        .with_context(|| format!("{}: cannot write", path.display()))?;
+    crate::output::write_file(&path, render_svg(&points, &layers, &options).as_bytes())?;
     Ok((file.to_string_lossy().trim_start_matches("./").to_string(), verdict))
 }
 

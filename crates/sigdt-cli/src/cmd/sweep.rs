@@ -195,7 +195,7 @@ fn generate(args: &SweepArgs, level: f64, k: u64) -> Result<Vec<(String, Labelle
             let mut sets = Vec::new();
             for (i, case) in cases.iter().enumerate() {
                 let files = case.row.files(&args.source);
-                let clean = sigdt::io::read_points(&files.points)?;
+                let clean = crate::read::points_of_file(&files.points)?;
                 let gt = sigdt::io::read_edges_of(&files.gt, clean.len())?;
                 let labelled = if args.kind == SweepKind::Noise {
                     let points = sigdt::samplers::uniform_noise(&clean, level, seed(i))?;
@@ -331,7 +331,7 @@ fn write_outputs(
         [("sweep.csv", csv), ("sets.csv", sets_csv), ("rmse.svg", rmse), ("exact.svg", exact)];
     for (name, text) in outputs {
         let path = args.out.join(name);
-        std::fs::write(&path, text).with_context(|| format!("{}: cannot write", path.display()))?;
+        crate::output::write_file(&path, text.as_bytes())?;
         note(&format!("wrote {}", path.display()));
     }
     Ok(())

@@ -3,11 +3,15 @@
 
 use super::*;
 
-/// A labelled folder: a 12-gon (manifold), a square (sharp) and a broken case.
+/// A labelled folder: a 12-gon (manifold, its points gzipped as any input may be), a square
+/// (sharp) and a broken case.
 fn labelled_folder() -> TempDir {
     let dir = tempdir();
     let d = dir.path();
-    write_points(d, "gon.xy", &circle(12, 1.0));
+    let text: String = circle(12, 1.0).iter().map(|p| format!("{} {}\n", p[0], p[1])).collect();
+    let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+    std::io::Write::write_all(&mut gz, text.as_bytes()).unwrap();
+    fs::write(d.join("gon.xy"), gz.finish().unwrap()).unwrap();
     fs::write(d.join("gon.gt"), edges_text(&cycle_edges(12))).unwrap();
     write_points(d, "square.xy", &square());
     fs::write(d.join("square.gt"), SQUARE_EDGES).unwrap();

@@ -22,7 +22,7 @@ pub fn write_report(data: &BenchData, out_dir: &Path) -> io::Result<Vec<PathBuf>
     let mut written = Vec::new();
     let mut save = |name: &str, contents: &[u8]| -> io::Result<()> {
         let path = out_dir.join(name);
-        fs::write(&path, contents)?;
+        crate::output::write_file(&path, contents).map_err(io::Error::other)?;
         written.push(path);
         Ok(())
     };
