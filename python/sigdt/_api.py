@@ -89,8 +89,9 @@ def reconstruct(
     Raises
     ------
     InvalidInputError
-        Wrong shape, NaN or infinite coordinates, or coordinates spanning more than about
-        2**172. (A subclass of SigdtError and ValueError.)
+        Wrong shape, NaN or infinite coordinates, coordinates spanning more than about
+        2**172, or a missing or empty shapely / GeoPandas point (the message names the
+        first). (A subclass of SigdtError and ValueError.)
     ValueError
         Unknown method.
     TypeError

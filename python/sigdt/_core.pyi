@@ -82,6 +82,9 @@ def proximity_graph(
     points: npt.NDArray[np.float64], kind: str, k: int | None = None
 ) -> npt.NDArray[np.int64]: ...
 def read_points(path: str | os.PathLike[str]) -> npt.NDArray[np.float64]: ...
+def place(
+    points: npt.NDArray[np.float64], width: float
+) -> tuple[float, npt.NDArray[np.float64]]: ...  # (height, (n, 2) pixels, y down)
 def cli_main(argv: list[str], worker: list[str]) -> int: ...
 def evaluate(
     points: npt.NDArray[np.float64], edges: npt.NDArray[np.int64], gt: npt.NDArray[np.int64]

@@ -24,13 +24,13 @@ def _geometry_points(points: Any) -> tuple[np.ndarray, Any] | None:
     if module.startswith("geopandas"):
         series = points.geometry if type(points).__name__ == "GeoDataFrame" else points
         kinds = set(series.geom_type.dropna().unique())
-        if series.isna().any() or series.is_empty.any() or kinds - {"Point"}:
+        if kinds - {"Point"}:
             raise InvalidInputError(
-                f"a {type(points).__name__} of {sorted(kinds) or 'empty'} geometries"
-                + (" with missing or empty ones" if series.isna().any() else "")
-                + ": sigdt reads one point per row; for the vertices of other geometries "
-                "pass series.get_coordinates() (its index repeats each row's)"
+                f"a {type(points).__name__} of {sorted(kinds)} geometries: sigdt reads one "
+                "point per row; for the vertices of other geometries pass "
+                "series.get_coordinates() (its index repeats each row's)"
             )
+        _refuse_empty_points(np.asarray(series.values), series.index)
         coords = np.c_[series.x.to_numpy(dtype=np.float64), series.y.to_numpy(dtype=np.float64)]
         return coords, series.index
     if module.startswith("shapely"):
@@ -40,7 +40,7 @@ def _geometry_points(points: Any) -> tuple[np.ndarray, Any] | None:
                 f"a shapely {kind}: pass a MultiPoint, a sequence of Points, or the vertices "
                 "of a geometry with sigdt.from_shapely(geometry)"
             )
-        return _shapely_coordinates(points), None
+        return _shapely_points(points), None
     if isinstance(points, (list, tuple)) and points:
         first = type(points[0]).__module__ or ""
         if first.startswith("shapely"):
@@ -49,15 +49,43 @@ def _geometry_points(points: Any) -> tuple[np.ndarray, Any] | None:
                 raise InvalidInputError(
                     f"a sequence of shapely {sorted(kinds)}: sigdt reads a sequence of Points"
                 )
-            return _shapely_coordinates(points), None
+            return _shapely_points(points), None
     return None
 
 
-def _shapely_coordinates(geometry: Any) -> np.ndarray:
+def _shapely_points(points: Any) -> np.ndarray:
+    """The coordinates of a shapely ``Point``, ``MultiPoint`` or sequence of points, one row
+    per point."""
     import shapely
 
-    coords = shapely.get_coordinates(geometry)
-    return np.ascontiguousarray(coords, dtype=np.float64).reshape(-1, 2)
+    parts = shapely.get_parts(points)
+    _refuse_empty_points(parts)
+    return np.ascontiguousarray(shapely.get_coordinates(parts), dtype=np.float64).reshape(-1, 2)
+
+
+def _refuse_empty_points(geometries: np.ndarray, index: Any = None) -> None:
+    """Refuses missing (``None``) and empty points, naming the first by its position (and
+    its ``index`` label, for GeoPandas rows). Shapely reads no coordinates from them, so
+    every later point would move up one position and the result's indices would name the
+    wrong points (GeoPandas gives them NaN coordinates)."""
+    import shapely
+
+    missing = shapely.is_missing(geometries)
+    bad = missing | shapely.is_empty(geometries)
+    if bad.any():
+        k = int(np.argmax(bad))
+        if index is None:
+            where, drop = f"point {k}", ""
+        else:
+            # The label as a Python value (20, not numpy's np.int64(20)).
+            where = f"row {index[k : k + 1].tolist()[0]!r} (position {k})"
+            drop = " (rows[~(rows.is_empty | rows.geometry.isna())])"
+        what = "missing (None)" if missing[k] else "an empty point, without coordinates"
+        raise InvalidInputError(
+            f"{where} is {what} ({int(bad.sum())} of {len(bad)} missing or empty): every "
+            "point needs coordinates, so that the result's indices name the input's points; "
+            f"drop them first{drop}"
+        )
 
 
 def _as_points_and_index(points: Any) -> tuple[np.ndarray, Any]:

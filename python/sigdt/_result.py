@@ -234,7 +234,7 @@ class Reconstruction:
 
     def to_svg(self, width: int = 400) -> str:
         """A standalone SVG picture of the result, ``width`` pixels wide: loops filled, edges
-        and points, in the colours of ``sigdt render``."""
+        and points, framed and coloured as ``sigdt render`` draws them."""
         from .shapely import to_svg
 
         return to_svg(self, width)

@@ -155,22 +155,28 @@ def _wkt(geometry: dict[str, Any] | None) -> str:
 
 def to_svg(rec: Reconstruction, width: int = 400) -> str:
     """A standalone SVG picture ``width`` pixels wide: the loops filled (holes even-odd), the
-    edges and the points, y pointing up, in the colours of ``sigdt render``."""
+    edges and the points, y pointing up, framed and coloured as ``sigdt render`` draws them
+    (any finite coordinates, up to ``±sys.float_info.max``, give a picture).
+
+    >>> import sigdt
+    >>> svg = sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]]).to_svg(width=100)
+    >>> svg.splitlines()[0]
+    '<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100" viewBox="0 0 100 100">'
+    """
+    from . import _core
+
     if width < 16:
         raise ValueError(f"width must be at least 16 pixels, got {width}")
-    pts, verts = np.asarray(rec.points), np.asarray(rec.vertices)
-    every = np.concatenate([pts.reshape(-1, 2), verts.reshape(-1, 2)])
-    pad = 8.0
-    if len(every):
-        lo, hi = every.min(axis=0), every.max(axis=0)
-    else:
-        lo, hi = np.zeros(2), np.ones(2)
-    span = float(max(hi[0] - lo[0], hi[1] - lo[1])) or 1.0
-    scale = (width - 2 * pad) / span
-    height = int(np.ceil((hi[1] - lo[1]) * scale + 2 * pad)) if len(every) else width
+    pts, verts = np.asarray(rec.points).reshape(-1, 2), np.asarray(rec.vertices).reshape(-1, 2)
+    # The CLI's frame (crates/sigdt-lab/src/render/frame.rs): it measures extents beyond
+    # f64's range in exact quarter units and draws a box too small to scale as a point.
+    every = np.ascontiguousarray(np.concatenate([pts, verts]), dtype=np.float64)
+    height, at = _core.place(every, float(width))
+    height = int(height)
+    dots, at = at[: len(pts)], at[len(pts) :]
 
-    def xy(p: np.ndarray) -> str:
-        return f"{(p[0] - lo[0]) * scale + pad:.2f},{height - ((p[1] - lo[1]) * scale + pad):.2f}"
+    def xy(k: int) -> str:
+        return f"{at[k][0]:.2f},{at[k][1]:.2f}"
 
     out = [
         (
@@ -181,16 +187,13 @@ def to_svg(rec: Reconstruction, width: int = 400) -> str:
         '<rect width="100%" height="100%" fill="#ffffff"/>',
     ]
     for shell, holes in rec.polygons:
-        d = " ".join(
-            "M " + " L ".join(xy(verts[i]) for i in rec.loops[k]) + " Z" for k in [shell, *holes]
-        )
+        d = " ".join("M " + " L ".join(xy(i) for i in rec.loops[k]) + " Z" for k in [shell, *holes])
         out.append(f'<path fill="#dce8f4" fill-rule="evenodd" d="{d}"/>')
     if len(rec.edges):
-        d = " ".join(f"M {xy(verts[i])} L {xy(verts[j])}" for i, j in rec.edges)
+        d = " ".join(f"M {xy(i)} L {xy(j)}" for i, j in rec.edges)
         out.append(f'<path fill="none" stroke="#1a1a1a" stroke-width="1.2" d="{d}"/>')
-    for p in pts:
-        cx, cy = xy(p).split(",")
-        out.append(f'<circle cx="{cx}" cy="{cy}" r="1.6" fill="#1a1a1a"/>')
+    for cx, cy in dots:
+        out.append(f'<circle cx="{cx:.2f}" cy="{cy:.2f}" r="1.6" fill="#1a1a1a"/>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
 

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import pickle
+import sys
+import warnings
 import xml.etree.ElementTree as ET
 
 import geopandas as gpd
@@ -30,6 +32,20 @@ def test_shapely_points_read_like_arrays() -> None:
     assert sigdt.to_shapely(expected).equals(shapely.Polygon(SQUARE))
 
 
+def test_empty_shapely_points_are_refused_by_position() -> None:
+    # Shapely reads no coordinates from an empty point: taking the others would shift the
+    # position of every later point, so that the result's indices name the wrong points.
+    points = [shapely.Point(p) for p in SQUARE]
+    points.insert(1, shapely.Point())
+    with pytest.raises(sigdt.InvalidInputError, match=r"^point 1 is an empty point"):
+        sigdt.reconstruct(points)
+    multipoint = shapely.from_wkt("MULTIPOINT ((0 0), (1 0), EMPTY, (1 1), (0 1))")
+    with pytest.raises(sigdt.InvalidInputError, match=r"^point 2 is an empty point"):
+        sigdt.reconstruct(multipoint)
+    with pytest.raises(sigdt.InvalidInputError, match=r"^point 0 is an empty point"):
+        sigdt.reconstruct(shapely.Point())
+
+
 def test_geopandas_rows_map_back_through_the_index() -> None:
     # Rows in a scrambled order with labels: the loop's rows come back by label.
     order = [2, 0, 3, 1]
@@ -44,8 +60,19 @@ def test_geopandas_rows_map_back_through_the_index() -> None:
     polygons = gpd.GeoSeries([shapely.Polygon(SQUARE)])
     with pytest.raises(sigdt.InvalidInputError, match="get_coordinates"):
         sigdt.reconstruct(polygons)
-    with pytest.raises(sigdt.InvalidInputError, match="missing"):
+    with pytest.raises(sigdt.InvalidInputError, match=r"^row 1 \(position 1\) is missing"):
         sigdt.reconstruct(gpd.GeoSeries([shapely.Point(0, 0), None]))
+
+
+def test_empty_geopandas_points_are_refused_by_row() -> None:
+    rows = [shapely.Point(p) for p in SQUARE] + [shapely.Point()]
+    series = gpd.GeoSeries(rows, index=[10, 20, 30, 40, 50])
+    message = r"^row 50 \(position 4\) is an empty point"
+    with pytest.raises(sigdt.InvalidInputError, match=message):
+        sigdt.reconstruct(series)
+    frame = gpd.GeoDataFrame({"name": list("abcde")}, geometry=series, index=series.index)
+    with pytest.raises(sigdt.InvalidInputError, match=message):
+        sigdt.reconstruct(frame)
 
 
 def test_wkt_reads_back_as_the_shapely_geometry() -> None:
@@ -73,3 +100,26 @@ def test_svg_is_a_standalone_picture() -> None:
     with pytest.raises(ValueError, match="width"):
         rec.to_svg(width=3)
     ET.fromstring(sigdt.reconstruct(np.zeros((0, 2))).to_svg())
+
+
+def test_svg_frames_any_finite_range_as_the_cli_does() -> None:
+    # Corners at ±f64::MAX overflow the box's extent, a subnormal side the scale; the CLI
+    # draws both (in quarter units; the tiny square as a point), and so must to_svg.
+    big = sys.float_info.max
+    huge = np.array([[-big, -big], [big, -big], [big, big], [-big, big]])
+    for square in (huge, SQUARE * 5e-324):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # numpy's overflow warnings included
+            svg = sigdt.reconstruct(square).to_svg(width=200)
+        root = ET.fromstring(svg)
+        size = [float(root.get(k)) for k in ("width", "height")]
+        xy = [[float(e.get("cx")), float(e.get("cy"))] for e in root.iter() if e.get("cx")] + [
+            [float(v) for v in token.split(",")]
+            for e in root.iter()
+            for token in (e.get("d") or "").split()
+            if "," in token
+        ]
+        assert len(xy) == 4 + 4 + 2 * 4, svg  # dots, the loop's vertices, the edges' ends
+        assert np.isfinite(xy).all() and ((0 <= np.array(xy)) & (np.array(xy) <= size)).all()
+    # An exact power-of-two scaling: the picture of the unit square, stretched.
+    assert sigdt.reconstruct(huge).to_svg() == sigdt.reconstruct(SQUARE * 2 - 1).to_svg()

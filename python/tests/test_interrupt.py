@@ -56,3 +56,14 @@ def test_one_large_reconstruction_is_interrupted_promptly():
     latency = interrupted_after(0.3, lambda: sigdt.reconstruct(points, method="sig-auto"))
     assert latency < 2.0, f"KeyboardInterrupt {latency:.2f} s after the signal"
     assert sigdt.reconstruct(points[:1000]).status in ("polygon", "polygons", "sculpting-stuck")
+
+
+def test_evaluate_is_interrupted_promptly():
+    # A random polygon: its edges cross everywhere, and the area's overlay splits each
+    # crossing (seconds of work).
+    n = 2500
+    points = np.random.default_rng(0).random((n, 2))
+    polygon = np.c_[np.arange(n), (np.arange(n) + 1) % n]
+    latency = interrupted_after(0.3, lambda: sigdt.evaluate(points, polygon[:0], polygon))
+    assert latency < 1.0, f"KeyboardInterrupt {latency:.2f} s after the signal"
+    assert sigdt.evaluate(points[:4], polygon[:0], [[0, 1], [1, 2], [2, 3], [3, 0]])["missing"] == 4

@@ -6,6 +6,7 @@ use pyo3::types::PyDict;
 use sigdt::Edge;
 
 use crate::convert::{err, guarded, points as point_slice, InternalError};
+use crate::interrupt::interruptible;
 
 /// The edges of an `(m, 2)` int64 array; negative indices are refused, naming the row.
 fn edge_list(array: &PyReadonlyArray2<'_, i64>, what: &str) -> PyResult<Vec<Edge>> {
@@ -30,9 +31,15 @@ fn edge_list(array: &PyReadonlyArray2<'_, i64>, what: &str) -> PyResult<Vec<Edge
         .collect()
 }
 
-/// Runs `f` with the GIL released and panics caught.
-fn run<T: Send>(py: Python<'_>, f: impl FnOnce() -> sigdt::Result<T> + Send) -> PyResult<T> {
-    py.detach(|| guarded(f)).map_err(InternalError::new_err)?.map_err(err)
+/// Runs `f` with the GIL released, panics caught, and Ctrl-C raising `KeyboardInterrupt`
+/// promptly when its `size` (counted as [`interruptible`] counts points) says it may take
+/// long.
+fn run<T: Send + 'static>(
+    py: Python<'_>,
+    size: usize,
+    f: impl FnOnce() -> sigdt::Result<T> + Send + 'static,
+) -> PyResult<T> {
+    interruptible(py, size, move |_| guarded(f))?.map_err(InternalError::new_err)?.map_err(err)
 }
 
 /// `evaluate(points, edges, gt) -> dict`: exact, missing, extra, rmse, rmse_to_gt,
@@ -46,7 +53,11 @@ pub fn evaluate<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let pts = point_slice(&points)?;
     let (edges, gt) = (edge_list(&edges, "edges")?, edge_list(&gt, "gt")?);
-    let m = run(py, || sigdt_lab::eval::evaluate(&pts, &edges, &gt))?;
+    // The area's overlay splits the rings at every crossing, quadratic in the edges when
+    // they cross everywhere (seconds for a few thousand): only calls that would be quick
+    // even then run without a thread of their own.
+    let size = pts.len().max((edges.len() + gt.len()).saturating_pow(2));
+    let m = run(py, size, move || sigdt_lab::eval::evaluate(&pts, &edges, &gt))?;
     let dict = PyDict::new(py);
     dict.set_item("exact", m.exact)?;
     dict.set_item("missing", m.missing)?;
@@ -68,7 +79,7 @@ pub fn graph_epsilon<'py>(
 ) -> PyResult<f64> {
     let pts = point_slice(&points)?;
     let gt = edge_list(&gt, "gt")?;
-    run(py, || sigdt_lab::eval::graph_epsilon(&pts, &gt))
+    run(py, pts.len() + gt.len(), move || sigdt_lab::eval::graph_epsilon(&pts, &gt))
 }
 
 /// `graph_overlap(points, gt) -> dict` of fractions (and `contains_*` booleans).
@@ -80,7 +91,7 @@ pub fn graph_overlap<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let pts = point_slice(&points)?;
     let gt = edge_list(&gt, "gt")?;
-    let o = run(py, || sigdt_lab::eval::overlap(&pts, &gt))?;
+    let o = run(py, pts.len() + gt.len(), move || sigdt_lab::eval::overlap(&pts, &gt))?;
     let dict = PyDict::new(py);
     dict.set_item("sig_in_dt", o.sig_in_dt)?;
     dict.set_item("dt_in_sig", o.dt_in_sig)?;

@@ -185,6 +185,24 @@ fn proximity_graph<'py>(
     convert::edges(py, &edges)
 }
 
+/// `place(points, width) -> (height, (n, 2) float64 array)`: where `sigdt render` puts the
+/// points on a page `width` pixels wide (`sigdt_lab::render::place`), NaN for a point it
+/// cannot place; `Reconstruction.to_svg` draws with it.
+#[pyfunction]
+fn place<'py>(
+    py: Python<'py>,
+    points: PyReadonlyArray2<'py, f64>,
+    width: f64,
+) -> PyResult<(f64, Bound<'py, PyArray2<f64>>)> {
+    let pts = convert::points(&points)?;
+    let (height, at) = py
+        .detach(|| guarded(|| Ok(sigdt_lab::render::place(&pts, width))))
+        .map_err(InternalError::new_err)?
+        .map_err(err)?;
+    let flat: Vec<f64> = at.iter().flat_map(|p| p.unwrap_or([f64::NAN; 2])).collect();
+    Ok((height, flat.into_pyarray(py).reshape([pts.len(), 2])?))
+}
+
 /// `read_points(path) -> (n, 2) float64 array`, in any format the CLI reads.
 #[pyfunction]
 fn read_points<'py>(
@@ -218,6 +236,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(polygons, m)?)?;
     m.add_function(wrap_pyfunction!(proximity_graph, m)?)?;
     m.add_function(wrap_pyfunction!(read_points, m)?)?;
+    m.add_function(wrap_pyfunction!(place, m)?)?;
     m.add_function(wrap_pyfunction!(cli_main, m)?)?;
     m.add_function(wrap_pyfunction!(eval::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(eval::graph_epsilon, m)?)?;

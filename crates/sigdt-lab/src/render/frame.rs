@@ -126,6 +126,17 @@ impl Frame {
     }
 }
 
+/// Where [`render_svg`](super::render_svg) puts `points` on a page `width` pixels wide,
+/// without title or legend: the page's height and each point's position in pixels (y
+/// pointing down, rounded to 0.01 px), `None` for a point that is not finite. For pictures
+/// drawn elsewhere (Python's `Reconstruction.to_svg`), so that they frame input of any
+/// range, from subnormal to ±`f64::MAX`, as `sigdt render` does.
+pub fn place(points: &[Point], width: f64) -> (f64, Vec<Option<[f64; 2]>>) {
+    let frame = Frame::new(points, width, 0.0);
+    let at = |p| frame.map(p).map(|[x, y]| [x as f64 / 100.0, y as f64 / 100.0]);
+    (frame.height, points.iter().map(|&p| at(p)).collect())
+}
+
 /// `v` limited to `lo..=hi`; `lo` for NaN.
 fn clamp(v: f64, lo: f64, hi: f64) -> f64 {
     if v >= lo {
@@ -193,6 +204,15 @@ mod tests {
         let tall = Frame::new(&[[0.0, 0.0], [0.0, 100.0], [1.0, 50.0]], 240.0, 0.0);
         assert_eq!(tall.height, 40.0 + 250.0);
         assert_eq!(clamp(f64::NAN, 1.0, 2.0), 1.0);
+    }
+
+    #[test]
+    fn place_is_the_frame_in_pixels() {
+        let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [f64::NAN, 0.0]];
+        let (height, at) = place(&square, 240.0);
+        assert_eq!(height, 240.0);
+        let corners = [[20.0, 220.0], [220.0, 220.0], [220.0, 20.0], [20.0, 20.0]];
+        assert_eq!(at, corners.map(Some).into_iter().chain([None]).collect::<Vec<_>>());
     }
 
     #[test]
