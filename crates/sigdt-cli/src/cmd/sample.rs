@@ -57,7 +57,24 @@ pub fn run(args: &SampleArgs) -> Result<()> {
     let labelled = match args.eps {
         Some(eps) => {
             let path = pick(&paths, args.path, &args.svg)?;
-            eps_sample(path, eps, args.offset, args.lfs_noise, args.seed, !args.ordered)?
+            let labelled =
+                eps_sample(path, eps, args.offset, args.lfs_noise, args.seed, !args.ordered)?;
+            // A curve that crosses itself has no manifold ground truth: the edges would cross
+            // where two samples should share a junction (issue 30, G18).
+            let clean = labelled.truth.as_ref().unwrap_or(&labelled.points);
+            if let Some(([i, j], _)) = sigdt::internals::first_crossing(clean, &labelled.gt) {
+                let at = |k: usize| clean[k];
+                anyhow::bail!(
+                    "{}: path {} crosses itself (between {:?} and {:?}): its ground truth \
+                     would cross; sample the drawing with --junctions, which joins crossing \
+                     curves at a shared point",
+                    args.svg.display(),
+                    args.path,
+                    at(i),
+                    at(j)
+                );
+            }
+            labelled
         }
         None => {
             if paths.is_empty() {

@@ -403,3 +403,30 @@ fn gallery_draws_cases_and_each_methods_failures() {
     sigdt(&["gallery", d, "--out", table.to_str().unwrap()]).usage_error();
     sigdt(&["gallery", d, "--cases", "gon", "--out", d]).error(&["is the data folder"]);
 }
+
+#[test]
+fn sample_is_the_same_at_every_scale_and_refuses_a_curve_that_crosses_itself() {
+    // Issue 30, G17: a circle of radius 1e18 drawn as two arcs took 20 s (svgtypes' absolute
+    // arc tolerance); at 1e200 sampling overflowed. Now each is read at a fixed size.
+    let dir = tempdir();
+    let counts: Vec<usize> = ["1", "1e18", "1e200", "1e-200"]
+        .iter()
+        .map(|r| {
+            let d = format!("M {r} 0 A {r} {r} 0 1 0 -{r} 0 A {r} {r} 0 1 0 {r} 0");
+            let svg = format!("<svg xmlns='http://www.w3.org/2000/svg'><path d='{d}'/></svg>");
+            fs::write(dir.path().join("c.svg"), svg).unwrap();
+            sigdt_in(dir.path(), &["sample", "c.svg", "--eps", "0.3", "-o", "c.xy"], None)
+                .expect(0);
+            fs::read_to_string(dir.path().join("c.xy")).unwrap().lines().count()
+        })
+        .collect();
+    assert!(counts.iter().all(|&c| c >= 8 && c.abs_diff(counts[0]) <= 2), "{counts:?}");
+    // G18: a figure eight through one point twice gave a ground truth that crosses itself.
+    let eight = "M 0 0 C 50 50 100 50 100 0 C 100 -50 50 -50 0 0 C -50 50 -100 50 -100 0 \
+                 C -100 -50 -50 -50 0 0 Z";
+    let svg = format!("<svg xmlns='http://www.w3.org/2000/svg'><path d='{eight}'/></svg>");
+    fs::write(dir.path().join("eight.svg"), svg).unwrap();
+    sigdt_in(dir.path(), &["sample", "eight.svg", "--eps", "0.3", "-o", "e.xy"], None)
+        .error(&["eight.svg: path 0 crosses itself", "--junctions"]);
+    assert!(!dir.path().join("e.xy").exists());
+}

@@ -52,6 +52,19 @@ pub struct BezierPath {
 }
 
 impl BezierPath {
+    /// The largest magnitude of a control point's coordinate.
+    pub fn largest_coordinate(&self) -> f64 {
+        self.segments.iter().flatten().flatten().fold(0.0, |m: f64, v| m.max(v.abs()))
+    }
+
+    /// The path with every control point multiplied by `2^power` (exactly, in the normal
+    /// range).
+    pub fn scaled(&self, power: i32) -> BezierPath {
+        let s = |p: Point| p.map(|v| scale_by_power_of_two(v, power));
+        let segments = self.segments.iter().map(|segment| segment.map(s)).collect();
+        BezierPath { segments, closed: self.closed }
+    }
+
     /// The point at global parameter `u`: segment `⌊u⌋` at its local parameter `u − ⌊u⌋`.
     /// `u` is taken modulo the number of segments for a closed path and clamped to
     /// `[0, segments]` for an open one. The origin for an empty path.
@@ -245,16 +258,23 @@ fn attribute_d(text: &str, mut pos: usize) -> std::result::Result<(Option<String
 /// Appends the subpaths of path data `d` (from the `<path` on `line`) to `curves`.
 fn subpaths(d: &str, name: &str, line: usize, curves: &mut Vec<BezierPath>) -> Result<()> {
     let fail = |message: String| Error::Parse { path: name.to_string(), line, message };
+    // svgtypes expands arcs to an absolute tolerance: at the drawing's own scale a circle
+    // of radius 1e18 became thousands of cubics. The data are read scaled by a power of two
+    // to a fixed size instead, and the cubics scaled back (exactly): the same curves at any
+    // scale.
+    let (scaled, power) = scaled_to_fixed_size(d);
+    let d = scaled.as_deref().unwrap_or(d);
+    let first_new = curves.len();
     let mut current = BezierPath::default();
     let (mut start, mut at) = ([0.0, 0.0], [0.0, 0.0]);
     let mut finish = |path: &mut BezierPath, at: Point, start: Point| {
         let mut path = std::mem::take(path);
         if !path.segments.is_empty() {
             path.closed |= at == start;
-            curves.push(path);
+            curves.push(path.scaled(-power));
         }
     };
-    check_arcs(d).map_err(fail)?;
+    check_arcs(d, power).map_err(fail)?;
     for segment in SimplifyingPathParser::from(d) {
         let segment = segment.map_err(|e| fail(format!("bad path data: {e}")))?;
         let (cubic, end) = match segment {
@@ -312,7 +332,97 @@ fn subpaths(d: &str, name: &str, line: usize, curves: &mut Vec<BezierPath>) -> R
         at = end;
     }
     finish(&mut current, at, start);
+    // Relative coordinates may add up past f64::MAX, which the fixed size hides until the
+    // cubics are scaled back.
+    if curves[first_new..].iter().any(|c| !c.largest_coordinate().is_finite()) {
+        return Err(fail("a non-finite coordinate: the path data overflow f64".to_string()));
+    }
     Ok(())
+}
+
+/// The size path data are read at: coordinates up to 2^10, as in a drawing in points or
+/// millimetres (svgtypes' arc tolerance, 0.1, is made for that).
+const READ_SIZE_POWER: i32 = 10;
+
+/// `d` with every coordinate and radius multiplied by `2^power`, the power that brings the
+/// largest into `[2^9, 2^10)`, and that power; `(None, 0)` when `d` does not parse (the
+/// simplifying parser then reports it) or has no non-zero finite coordinate.
+fn scaled_to_fixed_size(d: &str) -> (Option<String>, i32) {
+    let Ok(segments) = PathParser::from(d).collect::<std::result::Result<Vec<_>, _>>() else {
+        return (None, 0);
+    };
+    let mut largest = 0.0f64;
+    for segment in &segments {
+        let lengths: &[f64] = match segment {
+            PathSegment::MoveTo { x, y, .. }
+            | PathSegment::LineTo { x, y, .. }
+            | PathSegment::SmoothQuadratic { x, y, .. } => &[*x, *y],
+            PathSegment::HorizontalLineTo { x, .. } => &[*x],
+            PathSegment::VerticalLineTo { y, .. } => &[*y],
+            PathSegment::CurveTo { x1, y1, x2, y2, x, y, .. } => &[*x1, *y1, *x2, *y2, *x, *y],
+            PathSegment::SmoothCurveTo { x2, y2, x, y, .. }
+            | PathSegment::Quadratic { x1: x2, y1: y2, x, y, .. } => &[*x2, *y2, *x, *y],
+            PathSegment::EllipticalArc { rx, ry, x, y, .. } => &[*rx, *ry, *x, *y],
+            PathSegment::ClosePath { .. } => &[],
+        };
+        if lengths.iter().any(|v| !v.is_finite()) {
+            return (None, 0); // refused, with the value, by the simplifying parser's reading
+        }
+        largest = lengths.iter().fold(largest, |m, v| m.max(v.abs()));
+    }
+    let power = fixed_size_power(largest);
+    if power == 0 {
+        return (None, 0);
+    }
+    let s = |v: f64| format!("{:?}", scale_by_power_of_two(v, power));
+    let mut out = String::with_capacity(d.len());
+    for segment in segments {
+        let (letter, abs, numbers): (char, bool, Vec<String>) = match segment {
+            PathSegment::MoveTo { abs, x, y } => ('M', abs, vec![s(x), s(y)]),
+            PathSegment::LineTo { abs, x, y } => ('L', abs, vec![s(x), s(y)]),
+            PathSegment::HorizontalLineTo { abs, x } => ('H', abs, vec![s(x)]),
+            PathSegment::VerticalLineTo { abs, y } => ('V', abs, vec![s(y)]),
+            PathSegment::CurveTo { abs, x1, y1, x2, y2, x, y } => {
+                ('C', abs, vec![s(x1), s(y1), s(x2), s(y2), s(x), s(y)])
+            }
+            PathSegment::SmoothCurveTo { abs, x2, y2, x, y } => {
+                ('S', abs, vec![s(x2), s(y2), s(x), s(y)])
+            }
+            PathSegment::Quadratic { abs, x1, y1, x, y } => {
+                ('Q', abs, vec![s(x1), s(y1), s(x), s(y)])
+            }
+            PathSegment::SmoothQuadratic { abs, x, y } => ('T', abs, vec![s(x), s(y)]),
+            PathSegment::EllipticalArc { abs, rx, ry, x_axis_rotation, large_arc, sweep, x, y } => {
+                let flag = |f: bool| u8::from(f).to_string();
+                let rotation = format!("{x_axis_rotation:?}");
+                ('A', abs, vec![s(rx), s(ry), rotation, flag(large_arc), flag(sweep), s(x), s(y)])
+            }
+            PathSegment::ClosePath { abs } => ('Z', abs, vec![]),
+        };
+        out.push(if abs { letter } else { letter.to_ascii_lowercase() });
+        for v in numbers {
+            out.push(' ');
+            out.push_str(&v);
+        }
+        out.push(' ');
+    }
+    (Some(out), power)
+}
+
+/// The power of two that brings `largest` into `[2^9, 2^10)`; 0 for zero or non-finite.
+pub(crate) fn fixed_size_power(largest: f64) -> i32 {
+    match largest.is_finite() && largest > 0.0 {
+        true => READ_SIZE_POWER - 1 - largest.log2().floor() as i32,
+        false => 0,
+    }
+}
+
+/// `v · 2^power`, exact unless the result leaves the normal range.
+pub(crate) fn scale_by_power_of_two(v: f64, power: i32) -> f64 {
+    // 2^k is a normal f64 for k in -1022..=1023: larger powers in two steps.
+    let half = power / 2;
+    let factor = |k: i32| f64::from_bits(((k + 1023) as u64) << 52);
+    v * factor(half) * factor(power - half)
 }
 
 /// Whether `at` misses `start` only by floating-point rounding of the path's coordinates:
@@ -330,7 +440,7 @@ fn rounding_apart(path: &BezierPath, at: Point, start: Point) -> bool {
 /// parser then hands the cubics out one by one from the front of a list, quadratic in
 /// their number). Radii too small to span the chord grow as SVG says ([`arc_radius`]), so
 /// the current point is followed through the raw segments to measure the chord.
-fn check_arcs(d: &str) -> std::result::Result<(), String> {
+fn check_arcs(d: &str, power: i32) -> std::result::Result<(), String> {
     let limit = 0.1 / 1.1163 * (MAX_SEGMENTS as f64).powi(6);
     let (mut at, mut start) = ([0.0f64; 2], [0.0f64; 2]);
     let to =
@@ -354,6 +464,8 @@ fn check_arcs(d: &str) -> std::result::Result<(), String> {
                 let end = to(abs, at, x, y);
                 let size = arc_radius(at, end, rx, ry, x_axis_rotation);
                 if size.is_nan() || size > limit {
+                    // The radius as the file gives it, not at the size it is read at.
+                    let size = scale_by_power_of_two(size, -power);
                     return Err(format!(
                         "an elliptical arc of radius {size:.1e} (grown, as SVG does, to span its \
                          chord) would need more than {MAX_SEGMENTS} cubic segments"
@@ -456,17 +568,25 @@ mod tests {
     #[test]
     fn huge_arcs_and_paths_are_refused_before_they_are_expanded() {
         let refused = |d: &str| parse(&format!("<path d='{d}'/>")).unwrap_err().to_string();
-        let err = refused("M 2 1 A 44 4.4e33 14 1 0 0 80");
-        assert!(err.contains("elliptical arc of radius 4.4e33"), "{err}");
-        // A small radius grows to span a far end point, or a far start (fuzz finds).
-        let err = refused("m 1 1 a 44 4.4e12 14 1 0 44 4.4e59");
-        assert!(err.contains("elliptical arc of radius 5.3"), "{err}");
-        let err = refused("M 50,5e73 A 14,16 0,1 0 50,10 Z");
-        assert!(err.contains("elliptical arc of radius 2.5e73"), "{err}");
-        // A thin ellipse across a long chord: radii 9.2e18 and 14 scale by 2·10¹⁹ to span
-        // 5.6e20 (fuzz find: svgtypes made millions of cubics, handed out quadratically).
-        let err = refused("M 51,555555555555555555555 A 9169610316303040510 14,16 1 0 50,10");
-        assert!(err.contains("elliptical arc of radius 1.7e38"), "{err}");
+        // Arcs as large as the drawing are read at a fixed size: a few cubics at any scale
+        // (issue 30, G17: a circle of radius 1e18 took 20 s), also when a small radius grows
+        // to span a far end point or a far start (fuzz finds).
+        for d in [
+            "M 2 1 A 44 4.4e33 14 1 0 0 80",
+            "m 1 1 a 44 4.4e12 14 1 0 44 4.4e59",
+            "M 50,5e73 A 14,16 0,1 0 50,10 Z",
+            "M 1e18 0 A 1e18 1e18 0 1 0 -1e18 0 A 1e18 1e18 0 1 0 1e18 0",
+            "M 1e-300 0 A 1e-300 1e-300 0 1 0 -1e-300 0 A 1e-300 1e-300 0 1 0 1e-300 0",
+            "M 51,555555555555555555555 A 9169610316303040510 14,16 1 0 50,10",
+        ] {
+            let curves = parse(&format!("<path d='{d}'/>")).unwrap();
+            assert!((1..=16).contains(&curves[0].segments.len()), "{d}: {curves:?}");
+        }
+        // A thin ellipse across a long chord grows by the chord over its small radius, here
+        // to 10²³ times the drawing (fuzz find: svgtypes made millions of cubics, handed out
+        // quadratically).
+        let err = refused("M 0 0 A 1e-20 1000 0 1 0 1000 0");
+        assert!(err.contains("elliptical arc of radius 5.0e25"), "{err}");
         assert!(arc_radius([0.0, 0.0], [2.0, 0.0], 1.0, 1.0, 0.0) == 1.0);
         assert!(arc_radius([0.0, 0.0], [4.0, 0.0], 1.0, 1.0, 90.0) == 2.0);
         assert!(arc_radius([0.0, 0.0], [4.0, 0.0], 0.0, 1.0, 0.0) == 0.0);

@@ -42,6 +42,7 @@
 //! \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 //! \[OMW21\] S. Ohrhallinger, J. Peethambaran, A. Parakkat, T. Dey, R. Muthuganapathy.
 //! 2D Points Curve Reconstruction Survey and Benchmark. 2021.
+use super::bezier::{fixed_size_power, scale_by_power_of_two};
 use super::BezierPath;
 use sigdt::internals::{distance, KdTree};
 use sigdt::samplers::{cycle_edges, Sample};
@@ -185,6 +186,17 @@ pub fn eps_sample_at_density(
     }
     if !(0.0..1.0).contains(&offset) {
         return Err(Error::InvalidOption(format!("offset must be in [0, 1), got {offset}")));
+    }
+    // The walk is the same at every scale, but squared distances overflow past 1e154 and
+    // underflow below 1e-154: it runs on the path scaled by a power of two to a fixed size,
+    // and its points and lfs are scaled back (exactly).
+    let power = fixed_size_power(path.largest_coordinate());
+    if power != 0 {
+        let mut framed = eps_sample_at_density(&path.scaled(power), eps, offset, density)?;
+        let back = |v: f64| scale_by_power_of_two(v, -power);
+        framed.sample.points.iter_mut().for_each(|p| *p = p.map(back));
+        framed.lfs.iter_mut().for_each(|l| *l = back(*l));
+        return Ok(framed);
     }
     let dense = lfs_at_density(path, density)?;
     let walker = Walker { path, tree: KdTree::new(&dense.medial), eps, density: density as f64 };
