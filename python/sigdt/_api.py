@@ -230,17 +230,29 @@ def proximity_graph(points: Any, kind: str = "sigdt", k: int | None = None) -> I
     return _core.proximity_graph(_as_points(points), kind, k)
 
 
-def read_points(path: str | os.PathLike[str]) -> Coordinates:
-    """Read a point file in any format the command line reads.
+def read_points(
+    path: str | os.PathLike[str],
+    *,
+    columns: str | None = None,
+    max_points: int | None = None,
+) -> Coordinates:
+    """Read a point file in any format the command line reads, with its reader.
 
-    Plain text with two numbers a line separated by spaces, tabs or a comma (``.xy``,
-    ``.txt``, ``.csv``, ``.p2d``; ``#`` comments, one header line), or Dey's ``.gtn``.
+    Plain text with two numbers a line (``.xy``, ``.txt``, ``.csv``, ``.p2d``; ``#``
+    comments, one header line), Dey's ``.gtn``, CSV tables (``,``, ``;`` or tab separated,
+    quoted fields, a header), WKT, GeoJSON, NumPy ``.npy`` arrays, and each of these
+    gzip-compressed (``.gz``).
 
     Parameters
     ----------
     path : str or os.PathLike
-        The file; the format follows its extension (``.gtn``, else plain text), and
-        unknown extensions are detected from the first line.
+        The file; the format follows its content and extension, as ``sigdt reconstruct``
+        decides it.
+    columns : str, optional
+        The x and y columns of a table, as ``--columns``: names from its header row or
+        numbers from 1 (``"lon,lat"``, ``"3,4"``).
+    max_points : int, optional
+        Refuse a file with more points (reading stops at the first one over).
 
     Returns
     -------
@@ -250,18 +262,27 @@ def read_points(path: str | os.PathLike[str]) -> Coordinates:
     Raises
     ------
     ParseError
-        A line is malformed; the message names the file and line. (A ValueError.)
+        The content is not points; the message names the file (and line). (A ValueError.)
+    ValueError
+        ``columns`` is malformed, or given for a format without columns (WKT, GeoJSON,
+        ``.gtn``, ``.npy``).
     OSError
         The file cannot be read.
 
     Examples
     --------
-    >>> import sigdt, tempfile, os
+    >>> import sigdt, tempfile, os, gzip
     >>> with tempfile.TemporaryDirectory() as d:
     ...     path = os.path.join(d, "pts.csv")
     ...     _ = open(path, "w").write("x,y\\n0,0\\n1,0.5\\n")
     ...     sigdt.read_points(path)
     array([[0. , 0. ],
            [1. , 0.5]])
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     path = os.path.join(d, "pts.wkt.gz")
+    ...     _ = gzip.open(path, "wt").write("MULTIPOINT ((0 0), (2 1))")
+    ...     sigdt.read_points(path)
+    array([[0., 0.],
+           [2., 1.]])
     """
-    return _core.read_points(os.fspath(path))
+    return _core.read_points(os.fspath(path), columns, max_points)

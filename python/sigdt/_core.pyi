@@ -81,7 +81,9 @@ def polygons(
 def proximity_graph(
     points: npt.NDArray[np.float64], kind: str, k: int | None = None
 ) -> npt.NDArray[np.int64]: ...
-def read_points(path: str | os.PathLike[str]) -> npt.NDArray[np.float64]: ...
+def read_points(
+    path: str | os.PathLike[str], columns: str | None = None, max_points: int | None = None
+) -> npt.NDArray[np.float64]: ...
 def place(
     points: npt.NDArray[np.float64], width: float
 ) -> tuple[float, npt.NDArray[np.float64]]: ...  # (height, (n, 2) pixels, y down)

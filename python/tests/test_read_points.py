@@ -64,3 +64,26 @@ def test_read_points_then_reconstruct_bundled_input(repo_root: Path):
     expected = np.loadtxt(repo_root / "data/inputs/glyph_n_tilde.gt", dtype=np.int64)
     assert np.array_equal(points, np.loadtxt(repo_root / "data/inputs/glyph_n_tilde.xy"))
     assert np.array_equal(sigdt.reconstruct(points).edges, expected)
+
+
+def test_read_points_reads_every_format_the_cli_reads(tmp_path):
+    # Issue 30, G10: `.npy` and `.gz` failed as "NUL bytes: UTF-16?", WKT and tables too.
+    import gzip
+
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    np.save(tmp_path / "sq.npy", square)
+    with gzip.open(tmp_path / "sq.xy.gz", "wt") as f:
+        f.write("".join(f"{x} {y}\n" for x, y in square))
+    (tmp_path / "sq.wkt").write_text("MULTIPOINT ((0 0), (1 0), (1 1), (0 1))")
+    (tmp_path / "sq.geojson").write_text(
+        '{"type": "MultiPoint", "coordinates": [[0, 0], [1, 0], [1, 1], [0, 1]]}'
+    )
+    (tmp_path / "sq.csv").write_text("id;name;x;y\n1;a;0;0\n2;b;1;0\n3;c;1;1\n4;d;0;1\n")
+    for name in ("sq.npy", "sq.xy.gz", "sq.wkt", "sq.geojson", "sq.csv"):
+        np.testing.assert_array_equal(sigdt.read_points(tmp_path / name), square, name)
+    (tmp_path / "t.csv").write_text("p1,0,0\np2,1,0\np3,1,1\np4,0,1\n")
+    np.testing.assert_array_equal(sigdt.read_points(tmp_path / "t.csv", columns="2,3"), square)
+    with pytest.raises(ValueError, match="sq.wkt is WKT, which has no columns"):
+        sigdt.read_points(tmp_path / "sq.wkt", columns="1,2")
+    with pytest.raises(sigdt.ParseError, match="more than 3 points"):
+        sigdt.read_points(tmp_path / "sq.npy", max_points=3)

@@ -39,6 +39,43 @@ use crate::messages::UsageError;
 
 pub use bench::runner::set_worker_command;
 
+/// Why [`read_points_file`] failed, so that a caller can raise the matching exception.
+#[derive(Debug)]
+pub enum ReadError {
+    /// The file cannot be opened or read (`sigdt::Error::Io`).
+    Io(sigdt::Error),
+    /// The request does not fit the file (`columns` of a format without columns) or is not
+    /// understood (bad `columns`).
+    Usage(String),
+    /// The file's content is not points: the message names the file (and line).
+    Data(String),
+}
+
+/// The points of the file at `path` in any format the command line reads (with `columns`
+/// as `--columns`, and at most `max_points`), one reader for the binary and the Python
+/// package's `read_points`.
+pub fn read_points_file(
+    path: &std::path::Path,
+    columns: Option<&str>,
+    max_points: usize,
+) -> Result<Vec<sigdt::Point>, ReadError> {
+    let columns: Option<read::Columns> = match columns {
+        Some(text) => Some(text.parse().map_err(|m| ReadError::Usage(format!("columns: {m}")))?),
+        None => None,
+    };
+    let input = Input::new(max_points, columns);
+    input.points(path).map_err(|err| {
+        if let Some(usage) = err.downcast_ref::<UsageError>() {
+            return ReadError::Usage(usage.message.clone());
+        }
+        match err.downcast::<sigdt::Error>() {
+            Ok(io @ sigdt::Error::Io { .. }) => ReadError::Io(io),
+            Ok(other) => ReadError::Data(other.to_string()),
+            Err(err) => ReadError::Data(messages::one_line(&err)),
+        }
+    })
+}
+
 /// Runs the command line `args` (the first one is the program's name) and returns the exit
 /// status. Usage errors found after parsing, and SIGINT, SIGTERM or SIGHUP, end the process
 /// from inside with status 2 or 130.

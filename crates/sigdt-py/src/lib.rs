@@ -16,6 +16,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 use convert::{err, guarded, points, InternalError, InvalidInputError, ParseError};
 use interrupt::interruptible;
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use rayon::prelude::*;
@@ -203,13 +204,23 @@ fn place<'py>(
     Ok((height, flat.into_pyarray(py).reshape([pts.len(), 2])?))
 }
 
-/// `read_points(path) -> (n, 2) float64 array`, in any format the CLI reads.
+/// `read_points(path, columns, max_points) -> (n, 2) float64 array`, in any format the CLI
+/// reads, by the CLI's reader.
 #[pyfunction]
+#[pyo3(signature = (path, columns=None, max_points=None))]
 fn read_points<'py>(
     py: Python<'py>,
     path: std::path::PathBuf,
+    columns: Option<String>,
+    max_points: Option<usize>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
-    let pts = py.detach(|| sigdt::io::read_points(&path)).map_err(err)?;
+    let max_points = max_points.unwrap_or(usize::MAX);
+    let read = || sigdt_cli::read_points_file(&path, columns.as_deref(), max_points);
+    let pts = py.detach(read).map_err(|e| match e {
+        sigdt_cli::ReadError::Io(io) => err(io),
+        sigdt_cli::ReadError::Usage(message) => PyValueError::new_err(message),
+        sigdt_cli::ReadError::Data(message) => ParseError::new_err(message),
+    })?;
     let n = pts.len();
     let flat: Vec<f64> = pts.iter().flatten().copied().collect();
     flat.into_pyarray(py).reshape([n, 2])

@@ -54,7 +54,9 @@ pub struct Points {
 /// The points of `reader`, named `name` in errors (a path or `<stdin>`); see the module docs.
 pub fn points(reader: impl Read, name: &str, how: Reading<'_>) -> Result<Points> {
     let mut reader = BufReader::with_capacity(1 << 16, reader);
-    let head = reader.fill_buf().with_context(|| format!("{name}: cannot read"))?;
+    // The first read fails for a directory: an I/O error, as opening would give it.
+    let head =
+        reader.fill_buf().map_err(|source| sigdt::Error::Io { path: name.to_string(), source })?;
     if head.starts_with(GZIP) {
         let inner = name.strip_suffix(".gz").unwrap_or(name);
         let unzipped = flate2::read::MultiGzDecoder::new(reader);
