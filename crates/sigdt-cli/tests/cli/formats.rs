@@ -32,7 +32,7 @@ fn wkt_and_geojson_files_give_their_vertices() {
     sigdt_in(d, &["reconstruct", "-"], Some(wkt)).ok().stdout_is(SQUARE);
     fs::write(d.join("bad.geojson"), r#"{"type": "Circle", "radius": 1}"#).unwrap();
     sigdt_in(d, &["reconstruct", "bad.geojson"], None)
-        .error(&["bad.geojson", "unknown GeoJSON type \"Circle\""]);
+        .error(&["bad.geojson", "unknown GeoJSON type 'Circle'"]);
     fs::write(d.join("bad.wkt"), "POINT (0 0)\nLINESTRING (1 0, 2)\n").unwrap();
     sigdt_in(d, &["reconstruct", "bad.wkt"], None).error(&["bad.wkt:2: WKT: expected"]);
 }
