@@ -64,16 +64,36 @@ pub fn read_points_file(
         None => None,
     };
     let input = Input::new(max_points, columns);
-    input.points(path).map_err(|err| {
-        if let Some(usage) = err.downcast_ref::<UsageError>() {
-            return ReadError::Usage(usage.message.clone());
-        }
-        match err.downcast::<sigdt::Error>() {
-            Ok(io @ sigdt::Error::Io { .. }) => ReadError::Io(io),
-            Ok(other) => ReadError::Data(other.to_string()),
-            Err(err) => ReadError::Data(messages::one_line(&err)),
-        }
-    })
+    input.points(path).map_err(read_error)
+}
+
+/// [`read_points_file`] of `bytes` named `name` (whose extension chooses the reader as a
+/// file's would): for the fuzz targets of the readers.
+#[doc(hidden)]
+pub fn read_points_bytes(
+    bytes: &[u8],
+    name: &str,
+    columns: Option<&str>,
+    max_points: usize,
+) -> Result<Vec<sigdt::Point>, ReadError> {
+    let columns: Option<read::Columns> = match columns {
+        Some(text) => Some(text.parse().map_err(|m| ReadError::Usage(format!("columns: {m}")))?),
+        None => None,
+    };
+    let how = read::Reading { max_points, columns: columns.as_ref() };
+    read::points(bytes, name, how).map(|read| read.points).map_err(read_error)
+}
+
+/// The [`ReadError`] of a reader's error.
+fn read_error(err: anyhow::Error) -> ReadError {
+    if let Some(usage) = err.downcast_ref::<UsageError>() {
+        return ReadError::Usage(usage.message.clone());
+    }
+    match err.downcast::<sigdt::Error>() {
+        Ok(io @ sigdt::Error::Io { .. }) => ReadError::Io(io),
+        Ok(other) => ReadError::Data(other.to_string()),
+        Err(err) => ReadError::Data(messages::one_line(&err)),
+    }
 }
 
 /// Runs the command line `args` (the first one is the program's name) and returns the exit
