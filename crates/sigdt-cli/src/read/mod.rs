@@ -15,6 +15,7 @@
 //! Every error names the file (and the line where there is one).
 
 mod geojson;
+mod gzip;
 mod npy;
 mod table;
 mod wkt;
@@ -22,16 +23,13 @@ mod wkt;
 use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
 
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use sigdt::io::PointFormat;
 use sigdt::Point;
 
 use crate::messages::UsageError;
 
 pub use table::Columns;
-
-/// The gzip magic bytes.
-const GZIP: &[u8] = &[0x1f, 0x8b];
 
 /// How points are to be read: the limit on their number and the columns of a table.
 #[derive(Debug, Clone, Copy)]
@@ -57,12 +55,14 @@ pub fn points(reader: impl Read, name: &str, how: Reading<'_>) -> Result<Points>
     // The first read fails for a directory: an I/O error, as opening would give it.
     let head =
         reader.fill_buf().map_err(|source| sigdt::Error::Io { path: name.to_string(), source })?;
-    if head.starts_with(GZIP) {
+    if head.starts_with(gzip::MAGIC) {
         let inner = name.strip_suffix(".gz").unwrap_or(name);
-        let unzipped = flate2::read::MultiGzDecoder::new(reader);
-        let mut unzipped = BufReader::with_capacity(1 << 16, unzipped);
+        let mut unzipped = BufReader::with_capacity(1 << 16, gzip::Members::new(reader));
         // A corrupt stream fails at its first read, with the file's name.
-        unzipped.fill_buf().with_context(|| format!("{name}: not a valid gzip file"))?;
+        let head = unzipped.fill_buf().with_context(|| format!("{name}: not a valid gzip file"))?;
+        if head.starts_with(gzip::MAGIC) {
+            bail!("{name}: gzip inside gzip: decompress it once (gunzip), then read what remains");
+        }
         let mut read = uncompressed(unzipped, name, inner, how)?;
         read.how = format!("{} (gzip)", read.how);
         return Ok(read);
@@ -229,6 +229,12 @@ mod tests {
         assert_eq!(read(&gz.finish().unwrap(), "a.wkt.gz").unwrap(), square);
         let err = read(&[0x1f, 0x8b, 0, 1, 2, 3], "b.xy.gz").unwrap_err();
         assert!(format!("{err:#}").contains("b.xy.gz: not a valid gzip file"), "{err:#}");
+        let mut twice = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+        let mut once = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+        once.write_all(b"0 0\n").unwrap();
+        twice.write_all(&once.finish().unwrap()).unwrap();
+        let err = read(&twice.finish().unwrap(), "c.xy.gz").unwrap_err().to_string();
+        assert!(err.starts_with("c.xy.gz: gzip inside gzip"), "{err}");
     }
 
     #[test]
