@@ -87,6 +87,7 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     let progress = Stages::new("render");
     progress.stage(format!("reading {}", args.input.display()));
     let points = input.points(&args.input)?;
+    too_many_to_draw(&args.input, points.len())?;
     let gt = ground_truth(args.gt.as_deref(), points.len())?;
     let mut wanted = args.layers.clone();
     if wanted.is_empty() {
@@ -161,5 +162,38 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     } else {
         progress.stage(format!("writing {}", args.output.display()));
         output.write(|w| w.write_all(svg.as_bytes()))
+    }
+}
+
+/// The most points a picture shows: with every layer its SVG takes about 570 bytes a point
+/// to build (and a PNG is rasterised from it), so 2·10⁶ points need about 1.1 GB.
+const MAX_PICTURE_POINTS: usize = 2_000_000;
+
+/// Refuses more points than [`MAX_PICTURE_POINTS`], saying why and what to do instead.
+fn too_many_to_draw(input: &std::path::Path, n: usize) -> Result<()> {
+    if n > MAX_PICTURE_POINTS {
+        bail!(
+            "{}: {} points are more than a picture shows ({}: it takes about 570 bytes a \
+             point to draw); write the result with `sigdt reconstruct --format wkt` (or \
+             geojson) for a GIS tool, or draw a part of the points",
+            input.display(),
+            thousands(n),
+            thousands(MAX_PICTURE_POINTS)
+        );
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod size_tests {
+    use super::*;
+
+    #[test]
+    fn too_many_points_for_a_picture_are_refused_saying_why() {
+        // Issue 30, G15: 10⁶ points aborted under 512 MB, 10⁷ under 4 GB.
+        let input = std::path::Path::new("a.xy");
+        assert!(too_many_to_draw(input, MAX_PICTURE_POINTS).is_ok());
+        let err = too_many_to_draw(input, 10_000_000).unwrap_err().to_string();
+        assert!(err.starts_with("a.xy: 10,000,000 points are more than a picture shows"));
     }
 }

@@ -58,9 +58,7 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
     let progress = Stages::new("view");
     progress.stage(format!("reading {}", args.input.display()));
     let points = input.points(&args.input)?;
-    if u32::try_from(points.len()).is_err() {
-        bail!("{}: the viewer shows at most {} points", args.input.display(), u32::MAX);
-    }
+    too_many_to_view(&args.input, points.len())?;
     let gt = ground_truth(args.gt.as_deref(), points.len())?;
     // One triangulation serves the reconstruction, the graphs and the SIG radii.
     progress.stage(format!("triangulating {} points", thousands(points.len())));
@@ -133,9 +131,38 @@ fn size_warning(path: &Path, bytes: usize, steps: bool) -> Option<String> {
     })
 }
 
+/// The most points the viewer shows: building its page takes about 780 bytes a point (the
+/// triangulation, the graphs, the replay and the page text held at once), so 2·10⁶ points
+/// need about 1.6 GB, and a browser slows to a crawl well before.
+const MAX_VIEW_POINTS: usize = 2_000_000;
+
+/// Refuses more points than [`MAX_VIEW_POINTS`], saying why and what to do instead.
+fn too_many_to_view(input: &Path, n: usize) -> Result<()> {
+    if n > MAX_VIEW_POINTS {
+        bail!(
+            "{}: {} points are more than the viewer shows ({}: its page takes about 780 bytes \
+             a point to build); draw them with `sigdt render --layers points,result -o \
+             picture.png`, or view a part of them",
+            input.display(),
+            thousands(n),
+            thousands(MAX_VIEW_POINTS)
+        );
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn too_many_points_for_a_page_are_refused_saying_why() {
+        // Issue 30, G15: 10⁷ points aborted under 4 GB.
+        assert!(too_many_to_view(Path::new("a.xy"), MAX_VIEW_POINTS).is_ok());
+        let err = too_many_to_view(Path::new("a.xy"), 10_000_000).unwrap_err().to_string();
+        assert!(err.starts_with("a.xy: 10,000,000 points are more than the viewer shows"));
+        assert!(err.contains("sigdt render"), "{err}");
+    }
 
     #[test]
     fn large_pages_are_announced() {
