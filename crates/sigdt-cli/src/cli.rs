@@ -30,8 +30,9 @@ Input (INPUT is a file, or '-' for standard input):
   .gtn (Dey's CurveRecon)          a header 'N 2 0 0', then N lines 'index x y'
   CSV table (.csv .tsv)            ',' ';' or tab separators, quoted fields, a header row;
                                    x and y from --columns X,Y (names or numbers from 1),
-                                   else the only two columns or columns named x/y,
-                                   lon/lat, longitude/latitude; ';' files may use
+                                   else columns named x/y, lon/lat (lng, long,
+                                   longitude / latitude) or easting/northing (e/n) in
+                                   any order, else the only two; ';' files may use
                                    decimal commas ('1,5' is 1.5, so '1,000' is 1.0)
   WKT (.wkt)                       POINT, MULTIPOINT, LINESTRING, POLYGON, MULTI*,
                                    GEOMETRYCOLLECTION: every vertex (a ring's closing

@@ -9,8 +9,9 @@
 //! 4. the extension: `.wkt`, `.geojson` or `.json`, `.csv` or `.tsv` with more than two
 //!    fields, `;` separators or quotes;
 //! 5. the first character that is not white space: `{` or `[` is GeoJSON, a WKT keyword is
-//!    WKT; anything else goes to [`sigdt::io`], which reads plain and `.gtn` files and
-//!    refuses what it cannot read with the file and line.
+//!    WKT; a plain file whose header names y before x (`lat,lon`) is a table, read by name;
+//!    anything else goes to [`sigdt::io`], which reads plain and `.gtn` files and refuses
+//!    what it cannot read with the file and line.
 //!
 //! Every error names the file (and the line where there is one).
 
@@ -163,7 +164,10 @@ fn detect(head: &[u8], inner: &str) -> Format {
     if wkt::starts_wkt(first) {
         return Format::Wkt;
     }
-    Format::Kernel(PointFormat::detect(Path::new(inner), first))
+    match PointFormat::detect(Path::new(inner), first) {
+        PointFormat::Plain if table::names_y_before_x(first) => Format::Table,
+        format => Format::Kernel(format),
+    }
 }
 
 /// The first line of `head` with content: leading white space, a UTF-8 byte-order mark and
@@ -190,6 +194,17 @@ mod tests {
 
     fn read(bytes: &[u8], name: &str) -> Result<Vec<Point>> {
         points(bytes, name, Reading { max_points: 100, columns: None }).map(|p| p.points)
+    }
+
+    #[test]
+    fn a_header_naming_y_before_x_is_read_by_name() {
+        let read = |text: &str| {
+            points(text.as_bytes(), "a.csv", Reading { max_points: 9, columns: None }).unwrap()
+        };
+        let latlon = read("lat,lon\n10,20\n11,21\n");
+        assert_eq!(latlon.points, vec![[20.0, 10.0], [21.0, 11.0]]);
+        assert_eq!(latlon.how, "columns 'lon' and 'lat' of a table (the header row skipped)");
+        assert_eq!(read("x,y\n10,20\n").how, "plain lines", "the fast reader where it is right");
     }
 
     #[test]

@@ -1,8 +1,9 @@
 //! Points from a table: CSV with `,`, `;` or tab separators (or white space), fields
 //! optionally in double quotes (`""` inside for a quote), an optional header row, and the x
 //! and y columns chosen by name or 1-based number (`--columns x,y`, `--columns 3,4`) or
-//! found: the only two columns, or a header's `x`/`y` (`lon`/`lat`, `lng`/`lat`,
-//! `longitude`/`latitude`, `easting`/`northing`), in any case.
+//! found: a header's `x`/`y`, else `lon`, `lng`, `long` or `longitude` / `lat` or
+//! `latitude`, else `easting` or `e` / `northing` or `n` (any case, in any order and
+//! position: `lat,lon` is read as y then x), else the only two columns.
 //!
 //! The separator is the first of `;`, tab and `,` found in the first row, else white space.
 //! With `;` separators a number may use a decimal comma (`1,5`), as spreadsheets write it in
@@ -63,14 +64,31 @@ impl FromStr for Columns {
     }
 }
 
-/// Header names that mean x and y, in order of preference.
-const XY_NAMES: [(&str, &str); 5] = [
-    ("x", "y"),
-    ("lon", "lat"),
-    ("lng", "lat"),
-    ("longitude", "latitude"),
-    ("easting", "northing"),
+/// Header names that mean x and y (in any case), by kind in order of preference: plane,
+/// geographic, projected.
+const XY_NAMES: [(&[&str], &[&str]); 3] = [
+    (&["x"], &["y"]),
+    (&["lon", "lng", "long", "longitude"], &["lat", "latitude"]),
+    (&["easting", "e"], &["northing", "n"]),
 ];
+
+/// The x and y columns a header names, in any order and position (`lat,lon` is y then x).
+fn named_xy(header: &[String]) -> Option<(usize, usize)> {
+    let find = |names: &[&str]| {
+        header.iter().position(|h| names.iter().any(|n| h.trim().eq_ignore_ascii_case(n)))
+    };
+    XY_NAMES.iter().find_map(|(x, y)| Some((find(x)?, find(y)?)))
+}
+
+/// Whether `first`, the first line of a file the plain reader would read in file order, is
+/// a header that names y before x (`lat,lon`, `Y X`, `northing,easting`): the table reader,
+/// which reads columns by name, must read it, or every point comes out with x and y swapped.
+pub fn names_y_before_x(first: &str) -> bool {
+    let separator = [';', '\t', ','].into_iter().find(|&c| first.contains(c));
+    split_fields(first, separator).is_ok_and(|fields| {
+        is_header(&fields, None) && named_xy(&fields).is_some_and(|(x, y)| y < x)
+    })
+}
 
 /// Whether a `.csv`/`.tsv` file whose first row is `first` needs the table reader rather
 /// than the plain one: `;` or tab separators, quotes, or more than two fields.
@@ -259,11 +277,11 @@ fn choose(
         header.and_then(|h| h.iter().position(|n| n.trim().eq_ignore_ascii_case(wanted)))
     };
     let Some(columns) = columns else {
+        if let Some(pair) = header.and_then(named_xy) {
+            return Ok(pair);
+        }
         if width == 2 {
             return Ok((0, 1));
-        }
-        if let Some(pair) = XY_NAMES.iter().find_map(|(x, y)| Some((find(x)?, find(y)?))) {
-            return Ok(pair);
         }
         return Err(match header {
             Some(_) => format!(
@@ -428,6 +446,19 @@ mod tests {
         // Control characters in a field are escaped in messages (G11).
         let err = parse("x,y\n1,\u{1b}[2J\n", None).unwrap_err().to_string();
         assert_eq!(err, "t.csv:2: column 'y': '\\u{1b}[2J' is not a number");
+    }
+
+    #[test]
+    fn named_columns_are_read_in_any_order() {
+        // Issue 31: a two-column `lat,lon` file was read in file order, x and y swapped.
+        assert_eq!(parse("lat,lon\n10,20\n", None).unwrap(), vec![[20.0, 10.0]]);
+        assert_eq!(parse("Y X\n1 2\n", None).unwrap(), vec![[2.0, 1.0]]);
+        assert_eq!(parse("N;E\n1;2\n", None).unwrap(), vec![[2.0, 1.0]]);
+        let gis = "id,name,Latitude,Longitude,elev_m\n1,a,60.5,5.25,10\n";
+        assert_eq!(parse(gis, None).unwrap(), vec![[5.25, 60.5]]);
+        assert_eq!(parse("a,b\n1,2\n", None).unwrap(), vec![[1.0, 2.0]], "two unnamed columns");
+        assert!(names_y_before_x("lat,lon") && names_y_before_x("northing easting"));
+        assert!(!names_y_before_x("x,y") && !names_y_before_x("1,2") && !names_y_before_x("a b"));
     }
 
     #[test]
