@@ -59,10 +59,7 @@ pub fn read_points_file(
     columns: Option<&str>,
     max_points: usize,
 ) -> Result<Vec<sigdt::Point>, ReadError> {
-    let columns: Option<read::Columns> = match columns {
-        Some(text) => Some(text.parse().map_err(|m| ReadError::Usage(format!("columns: {m}")))?),
-        None => None,
-    };
+    let columns = parse_columns(columns)?;
     let input = Input::new(max_points, columns);
     input.points(path).map_err(read_error)
 }
@@ -76,12 +73,16 @@ pub fn read_points_bytes(
     columns: Option<&str>,
     max_points: usize,
 ) -> Result<Vec<sigdt::Point>, ReadError> {
-    let columns: Option<read::Columns> = match columns {
-        Some(text) => Some(text.parse().map_err(|m| ReadError::Usage(format!("columns: {m}")))?),
-        None => None,
-    };
+    let columns = parse_columns(columns)?;
     let how = read::Reading { max_points, columns: columns.as_ref() };
     read::points(bytes, name, how).map(|read| read.points).map_err(read_error)
+}
+
+/// `columns` as `--columns` reads them.
+fn parse_columns(columns: Option<&str>) -> Result<Option<read::Columns>, ReadError> {
+    columns
+        .map(|text| text.parse().map_err(|m| ReadError::Usage(format!("columns: {m}"))))
+        .transpose()
 }
 
 /// The [`ReadError`] of a reader's error.
