@@ -78,6 +78,9 @@ def polygons(
     loop_vertices: npt.NDArray[np.int64],
     loop_offsets: npt.NDArray[np.int64],
 ) -> list[tuple[int, list[int]]]: ...  # (shell, holes): indices into the loops
+def write_reconstruction(
+    points: npt.NDArray[np.float64], fields: _Reconstruction, format: str
+) -> str: ...  # the text of `sigdt reconstruct --format FORMAT`
 def proximity_graph(
     points: npt.NDArray[np.float64], kind: str, k: int | None = None
 ) -> npt.NDArray[np.int64]: ...

@@ -215,14 +215,21 @@ class Reconstruction:
 
     def to_geojson(self) -> GeoJsonFeature:
         """The result as a GeoJSON ``Feature`` (a JSON-serialisable dict) with the status
-        and counts as properties."""
+        and counts as properties: what ``sigdt reconstruct --format geojson`` writes for
+        it, by the same writer (see :func:`sigdt.shapely.to_geojson` for the members).
+
+        >>> import sigdt
+        >>> sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]]).to_geojson()["properties"]
+        {'status': 'polygon', 'points': 4, 'edges': 4, 'loops': 1, 'paths': 0, 'duplicates': 0, 'warning': False}
+        """
         from .shapely import to_geojson
 
         return to_geojson(self)
 
     def to_wkt(self) -> str:
         """The result as WKT (the geometry of :meth:`to_shapely`), without needing shapely;
-        coordinates read back exactly.
+        coordinates read back exactly. It is the text ``sigdt reconstruct --format wkt``
+        writes for the result, by the same writer, without the final newline.
 
         >>> import sigdt
         >>> sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]]).to_wkt()

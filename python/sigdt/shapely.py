@@ -3,7 +3,8 @@ lazily; GeoJSON, WKT and SVG need only numpy)."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+import json
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
@@ -102,55 +103,36 @@ def from_shapely(geometry: object) -> Coordinates:
     return np.ascontiguousarray(shapely.get_coordinates(geometry), dtype=np.float64)
 
 
+def _text(rec: Reconstruction, fmt: str) -> str:
+    """The result in ``fmt`` by the CLI's writer (``sigdt::io::write_reconstruction``)."""
+    from . import _core
+
+    points = np.require(np.asarray(rec.points).reshape(-1, 2), np.float64, ["C", "A"])
+    return _core.write_reconstruction(points, rec._fields, fmt)
+
+
 def to_geojson(rec: Reconstruction) -> GeoJsonFeature:
     """A GeoJSON ``Feature``: the geometry of :func:`to_shapely` (without needing shapely),
     with status and counts as properties, the points left out with their reasons, whether
-    the result warns, and the sampling check's findings (as ``sigdt reconstruct --format
-    geojson`` writes them)."""
-    loops, paths = rec.loops, rec.paths
-    properties: dict[str, Any] = {
-        "status": rec.status,
-        "points": len(rec.points),
-        "edges": len(rec.edges),
-        "loops": len(loops),
-        "paths": len(paths),
-        "duplicates": len(rec.duplicates),
-    }
-    if len(rec.left_out):
-        properties["left_out"] = rec.left_out.tolist()
-        properties["left_out_reasons"] = list(rec.left_out_reasons)
-    properties["warning"] = rec.warns
-    if rec.diagnosis:
-        properties["diagnosis"] = list(rec.diagnosis)
-    return {"type": "Feature", "geometry": _geometry(rec), "properties": properties}
+    the result warns, and the sampling check's findings.
+
+    It is what ``sigdt reconstruct --format geojson`` writes for the same result, read with
+    :func:`json.loads`: one writer makes both (``sigdt::io::write_reconstruction``). The
+    properties are ``status``, ``points`` (the input's count), ``vertices`` (only when the
+    method moved the points or placed its own: the count of the positions the geometry
+    uses), ``edges``, ``loops``, ``paths``, ``duplicates``, ``left_out`` and
+    ``left_out_reasons`` (when points were left out), ``warning`` and ``diagnosis`` (when
+    the sampling check found something). A coordinate that is not finite is ``null``.
+    """
+    return cast("GeoJsonFeature", json.loads(_text(rec, "geojson")))
 
 
 def to_wkt(rec: Reconstruction) -> str:
-    """The geometry of :func:`to_shapely` as WKT, without needing shapely; coordinates are
-    written so that they read back exactly. An empty result is ``GEOMETRYCOLLECTION EMPTY``."""
-    return _wkt(_geometry(rec))
-
-
-def _wkt(geometry: dict[str, Any] | None) -> str:
-    def coords(line: list[list[float]]) -> str:
-        return "(" + ", ".join(f"{x!r} {y!r}" for x, y in line) + ")"
-
-    def rings(polygon: list[list[list[float]]]) -> str:
-        return "(" + ", ".join(coords(r) for r in polygon) + ")"
-
-    if geometry is None:
-        return "GEOMETRYCOLLECTION EMPTY"
-    kind, c = geometry["type"], geometry.get("coordinates")
-    if kind == "Polygon":
-        return "POLYGON " + rings(c)
-    if kind == "MultiPolygon":
-        return "MULTIPOLYGON (" + ", ".join(rings(p) for p in c) + ")"
-    if kind == "LineString":
-        return "LINESTRING " + coords(c)
-    if kind == "MultiLineString":
-        return "MULTILINESTRING (" + ", ".join(coords(line) for line in c) + ")"
-    parts = ", ".join(_wkt(g) for g in geometry["geometries"])
-    return "GEOMETRYCOLLECTION (" + parts + ")"
+    """The geometry of :func:`to_shapely` as WKT, without needing shapely: the text of
+    ``sigdt reconstruct --format wkt`` for the same result (one writer makes both), without
+    its final newline. Coordinates are written so that they read back exactly (``1.0``,
+    ``1e-7``, ``3e20``). An empty result is ``GEOMETRYCOLLECTION EMPTY``."""
+    return _text(rec, "wkt").rstrip("\n")
 
 
 def to_svg(rec: Reconstruction, width: int = 400) -> str:
@@ -196,34 +178,3 @@ def to_svg(rec: Reconstruction, width: int = 400) -> str:
         out.append(f'<circle cx="{cx:.2f}" cy="{cy:.2f}" r="1.6" fill="#1a1a1a"/>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
-
-
-def _geometry(rec: Reconstruction) -> dict[str, Any] | None:
-    """The GeoJSON geometry of the result (``None`` when empty)."""
-
-    def ring(idx: np.ndarray) -> list[list[float]]:
-        coords = rec.vertices[idx].tolist()
-        return coords + coords[:1]
-
-    loops, paths = rec.loops, rec.paths
-    polygons = [
-        [ring(loops[shell])] + [ring(loops[h][::-1]) for h in holes]
-        for shell, holes in rec.polygons
-    ]
-    lines = [rec.vertices[p].tolist() for p in paths]
-    geometries = [{"type": "Polygon", "coordinates": p} for p in polygons] + [
-        {"type": "LineString", "coordinates": line} for line in lines
-    ]
-    if not geometries:
-        geometry = None
-    elif len(polygons) == 1 and not lines:
-        geometry = geometries[0]
-    elif polygons and not lines:
-        geometry = {"type": "MultiPolygon", "coordinates": polygons}
-    elif len(lines) == 1 and not polygons:
-        geometry = geometries[0]
-    elif lines and not polygons:
-        geometry = {"type": "MultiLineString", "coordinates": lines}
-    else:
-        geometry = {"type": "GeometryCollection", "geometries": geometries}
-    return geometry

@@ -146,3 +146,42 @@ def test_sig_auto_open_curve_is_a_linestring_and_mixed_is_a_collection():
     geometry = both.to_shapely()
     assert geometry.geom_type == "GeometryCollection"
     assert sorted(g.geom_type for g in geometry.geoms) == ["LineString", "Polygon"]
+
+
+def test_to_wkt_and_to_geojson_take_every_name_the_core_gives():
+    """The writer rebuilds the core's result from the Python one: every status, reason and
+    finding kind name is read back, and a pickled result writes the same text."""
+    import pickle
+    import typing
+
+    from sigdt import _types
+
+    square = sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]])
+    for status in typing.get_args(_types.Status):
+        fields = {**square._fields, "status": status}
+        feature = sigdt.Reconstruction(square.points, fields).to_geojson()
+        assert feature["properties"]["status"] == status
+    reasons = list(typing.get_args(_types.LeftOutReason))
+    kinds = typing.get_args(_types.FindingKind)
+    findings = [{"kind": k, "count": 1, "worst": 0.5, "at": 0, "message": ""} for k in kinds]
+    fields = {
+        **square._fields,
+        "left_out": np.arange(len(reasons), dtype=np.int64) % 4,
+        "left_out_reasons": reasons,
+        "diagnosis": findings,
+    }
+    properties = sigdt.Reconstruction(square.points, fields).to_geojson()["properties"]
+    assert properties["left_out_reasons"] == reasons and properties["warning"] is True
+    assert [f["kind"] for f in properties["diagnosis"]] == list(kinds)
+    assert all(f["message"] for f in properties["diagnosis"])  # the core's own sentence
+    back = pickle.loads(pickle.dumps(square))
+    assert back.to_wkt() == square.to_wkt() and back.to_geojson() == square.to_geojson()
+
+
+def test_a_result_whose_indices_are_out_of_range_is_refused():
+    square = sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]])
+    fields = {**square._fields, "loop_vertices": np.array([0, 1, 2, 9], dtype=np.int64)}
+    with pytest.raises(ValueError, match="vertex 9 is not a point index"):
+        sigdt.Reconstruction(square.points, fields).to_wkt()
+    with pytest.raises(ValueError, match="unknown status"):
+        sigdt.Reconstruction(square.points, {**square._fields, "status": "nope"}).to_wkt()

@@ -3,10 +3,12 @@ use numpy::{
     IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
     PyUntypedArrayMethods,
 };
-use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::exceptions::{PyKeyError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-use sigdt::{Edge, Point, Reconstruction, Vertices};
+use sigdt::{
+    Edge, Finding, FindingKind, LeftOut, LeftOutReason, Point, Reconstruction, Status, Vertices,
+};
 
 // The exception classes are Python's (`python/sigdt/errors.py`), so that they can derive
 // from both `SigdtError` and the built-in class a caller expects.
@@ -186,4 +188,144 @@ pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bo
     dict.set_item("duplicates", edges(py, &rec.duplicates)?)?;
     dict.set_item("stats", stats)?;
     Ok(dict)
+}
+
+/// The value of `key` in `fields`; a `KeyError` naming it when it is missing.
+fn item<'py>(fields: &Bound<'py, PyDict>, key: &str) -> PyResult<Bound<'py, PyAny>> {
+    fields.get_item(key)?.ok_or_else(|| PyKeyError::new_err(key.to_string()))
+}
+
+/// The `[i, j]` rows of an `(m, 2)` int64 array, each index below `n`.
+fn pairs_from(array: &Bound<'_, PyAny>, what: &str, n: usize) -> PyResult<Vec<Edge>> {
+    let array = array.extract::<PyReadonlyArray2<'_, i64>>()?;
+    let view = array.as_array();
+    if view.ncols() != 2 && view.nrows() > 0 {
+        return Err(PyValueError::new_err(format!("{what} must have shape (m, 2)")));
+    }
+    view.rows()
+        .into_iter()
+        .map(|row| {
+            let index = |v: i64| {
+                usize::try_from(v).ok().filter(|&v| v < n).ok_or_else(|| {
+                    PyValueError::new_err(format!("{what}: {v} is not an index below {n}"))
+                })
+            };
+            Ok([index(row[0])?, index(row[1])?])
+        })
+        .collect()
+}
+
+/// The status named `name`; `SculptingStuck` lists the points left out as inside.
+fn status_from(name: &str, left_out: &[LeftOut]) -> PyResult<Status> {
+    let inside = left_out.iter().filter(|l| l.reason == LeftOutReason::Inside).map(|l| l.index);
+    [
+        Status::Polygon,
+        Status::Polygons,
+        Status::SculptingStuck { left_out: inside.collect() },
+        Status::Curves,
+        Status::Network,
+        Status::Noisy,
+        Status::Crossing,
+        Status::Unfinished,
+        Status::Collinear,
+        Status::TooFewPoints,
+    ]
+    .into_iter()
+    .find(|s| s.name() == name)
+    .ok_or_else(|| PyValueError::new_err(format!("unknown status {name:?}")))
+}
+
+/// The finding of a dict made by [`reconstruction`] (its `message` is the finding's text, so
+/// it is not read back).
+fn finding_from(finding: &Bound<'_, PyAny>) -> PyResult<Finding> {
+    let finding = finding.cast::<PyDict>()?;
+    let name: String = item(finding, "kind")?.extract()?;
+    let kind = [
+        FindingKind::PassesOverSamples,
+        FindingKind::DoublesBack,
+        FindingKind::SmallLoops,
+        FindingKind::OpenEnds,
+        FindingKind::OutliersOnCurve,
+        FindingKind::EndsMeet,
+        FindingKind::NoisyArea,
+    ]
+    .into_iter()
+    .find(|k| k.name() == name)
+    .ok_or_else(|| PyValueError::new_err(format!("unknown finding kind {name:?}")))?;
+    Ok(Finding {
+        kind,
+        count: item(finding, "count")?.extract()?,
+        worst: item(finding, "worst")?.extract()?,
+        at: item(finding, "at")?.extract()?,
+    })
+}
+
+/// The core's result of a dict made by [`reconstruction`] from `n` points (as
+/// `python/sigdt/_result.py` keeps it, maybe pickled and back): everything the writers of
+/// `sigdt::io` read (not `stats`). Every index is checked against the points or vertices
+/// it refers to; an unknown name or a missing key raises.
+pub fn reconstruction_from(fields: &Bound<'_, PyDict>, n: usize) -> PyResult<Reconstruction> {
+    let positions = item(fields, "positions")?;
+    let positions = if positions.is_none() {
+        None
+    } else {
+        Some(points(&positions.extract::<PyReadonlyArray2<'_, f64>>()?)?)
+    };
+    let kind: String = item(fields, "vertices")?.extract()?;
+    let vertices = match (kind.as_str(), positions) {
+        ("input", None) => Vertices::Input,
+        ("moved", Some(p)) if p.len() == n => Vertices::Moved(p),
+        ("new", Some(p)) => Vertices::New(p),
+        (kind, _) => {
+            return Err(PyValueError::new_err(format!(
+                "vertices {kind:?} do not match the positions given"
+            )))
+        }
+    };
+    let k = match &vertices {
+        Vertices::Input => n,
+        Vertices::Moved(p) | Vertices::New(p) => p.len(),
+    };
+    let chains = |name: &str| -> PyResult<Vec<Vec<usize>>> {
+        let flat = item(fields, &format!("{name}_vertices"))?;
+        let offsets = item(fields, &format!("{name}_offsets"))?;
+        chains_from(&flat.extract()?, &offsets.extract()?, k)
+    };
+    let (loops, paths) = (chains("loop")?, chains("path")?);
+    let indices = item(fields, "left_out")?.extract::<PyReadonlyArray1<'_, i64>>()?;
+    let reasons: Vec<String> = item(fields, "left_out_reasons")?.extract()?;
+    if indices.len() != reasons.len() {
+        return Err(PyValueError::new_err("left_out and left_out_reasons differ in length"));
+    }
+    let left_out = indices
+        .as_array()
+        .iter()
+        .zip(&reasons)
+        .map(|(&index, reason)| {
+            let index = usize::try_from(index).ok().filter(|&i| i < n).ok_or_else(|| {
+                PyValueError::new_err(format!("left_out: {index} is not a point index"))
+            })?;
+            let reason =
+                LeftOutReason::ALL.into_iter().find(|r| r.name() == reason).ok_or_else(|| {
+                    PyValueError::new_err(format!("unknown left-out reason {reason:?}"))
+                })?;
+            Ok(LeftOut { index, reason })
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let status: String = item(fields, "status")?.extract()?;
+    let diagnosis = item(fields, "diagnosis")?
+        .try_iter()?
+        .map(|f| finding_from(&f?))
+        .collect::<PyResult<Vec<_>>>()?;
+    Ok(Reconstruction {
+        edges: pairs_from(&item(fields, "edges")?, "edges", k)?,
+        loops,
+        paths,
+        status: status_from(&status, &left_out)?,
+        duplicates: pairs_from(&item(fields, "duplicates")?, "duplicates", n)?,
+        left_out,
+        vertices,
+        stats: Default::default(),
+        diagnosis,
+    })
 }

@@ -168,6 +168,32 @@ fn polygons(
     Ok(polygons.into_iter().map(|p| (p.shell, p.holes)).collect())
 }
 
+/// `write_reconstruction(points, fields, format) -> str`: the result of `reconstruct` (the
+/// dict `fields`, from `points`) as text in `format` (`wkt`, `geojson`, `loops`, `edges`), by
+/// the writer of `sigdt reconstruct --format` (`sigdt::io::write_reconstruction`), so that
+/// `to_wkt` and `to_geojson` write what the CLI writes.
+#[pyfunction]
+fn write_reconstruction(
+    py: Python<'_>,
+    points: PyReadonlyArray2<'_, f64>,
+    fields: &Bound<'_, PyDict>,
+    format: &str,
+) -> PyResult<String> {
+    let format: sigdt::io::OutputFormat = format.parse().map_err(err)?;
+    let pts = convert::points(&points)?;
+    let rec = convert::reconstruction_from(fields, pts.len())?;
+    let write = || {
+        let mut out = Vec::new();
+        sigdt::io::write_reconstruction(&mut out, format, &pts, &rec).map(|()| out)
+    };
+    let out = py
+        .detach(|| guarded(|| Ok(write())))
+        .map_err(InternalError::new_err)?
+        .map_err(err)?
+        .map_err(|e| InternalError::new_err(format!("writing the result: {e}")))?;
+    String::from_utf8(out).map_err(|e| InternalError::new_err(e.to_string()))
+}
+
 /// `proximity_graph(points, kind, k) -> (m, 2) int64 array`.
 #[pyfunction]
 #[pyo3(signature = (points, kind, k=None))]
@@ -245,6 +271,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(reconstruct_many, m)?)?;
     m.add_function(wrap_pyfunction!(trace, m)?)?;
     m.add_function(wrap_pyfunction!(polygons, m)?)?;
+    m.add_function(wrap_pyfunction!(write_reconstruction, m)?)?;
     m.add_function(wrap_pyfunction!(proximity_graph, m)?)?;
     m.add_function(wrap_pyfunction!(read_points, m)?)?;
     m.add_function(wrap_pyfunction!(place, m)?)?;

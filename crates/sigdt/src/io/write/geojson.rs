@@ -1,11 +1,13 @@
 //! GeoJSON: one `Feature` whose geometry holds the loops and paths and whose properties give
-//! the status and counts, the points left out with their reasons (when there are any),
-//! whether front ends warn, and the sampling check's findings (when there are any).
+//! the status and counts (`points` counts the input; `vertices`, written only when the
+//! method moved the points or placed its own, counts the positions the geometry uses), the
+//! points left out with their reasons (when there are any), whether front ends warn, and
+//! the sampling check's findings (when there are any).
 use std::io::{self, Write};
 
 use super::geometry::{geometry, write_pair, Kind, Notation};
 use crate::geometry::Point;
-use crate::result::{Finding, Reconstruction};
+use crate::result::{Finding, Reconstruction, Vertices};
 
 /// The GeoJSON notation of geometry objects.
 pub(super) struct GeoJson;
@@ -40,14 +42,23 @@ impl Notation for GeoJson {
     }
 }
 
-/// The GeoJSON `Feature` of `rec` and a newline.
-pub(super) fn geojson(out: &mut Vec<u8>, points: &[Point], rec: &Reconstruction) -> io::Result<()> {
+/// The GeoJSON `Feature` of `rec`, from `n` input points whose positions for the geometry
+/// are `vertices` ([`Reconstruction::vertex_positions`]), and a newline.
+pub(super) fn geojson(
+    out: &mut Vec<u8>,
+    n: usize,
+    vertices: &[Point],
+    rec: &Reconstruction,
+) -> io::Result<()> {
     out.extend_from_slice(br#"{"type": "Feature", "geometry": "#);
-    geometry::<GeoJson>(out, points, rec)?;
-    let (n, m, d) = (points.len(), rec.edges.len(), rec.duplicates.len());
-    let (k, p, status) = (rec.loops.len(), rec.paths.len(), rec.status.name());
-    write!(out, r#", "properties": {{"status": "{status}", "points": {n}, "edges": {m}, "#)?;
-    write!(out, r#""loops": {k}, "paths": {p}, "duplicates": {d}"#)?;
+    geometry::<GeoJson>(out, vertices, rec)?;
+    let (m, d, status) = (rec.edges.len(), rec.duplicates.len(), rec.status.name());
+    write!(out, r#", "properties": {{"status": "{status}", "points": {n}, "#)?;
+    if !matches!(rec.vertices, Vertices::Input) {
+        write!(out, r#""vertices": {}, "#, vertices.len())?;
+    }
+    let (k, p) = (rec.loops.len(), rec.paths.len());
+    write!(out, r#""edges": {m}, "loops": {k}, "paths": {p}, "duplicates": {d}"#)?;
     if !rec.left_out.is_empty() {
         let indices: Vec<_> = rec.left_out.iter().map(|l| l.index.to_string()).collect();
         let reasons: Vec<_> =
@@ -64,15 +75,16 @@ pub(super) fn geojson(out: &mut Vec<u8>, points: &[Point], rec: &Reconstruction)
     Ok(())
 }
 
-/// One finding of the sampling check as a JSON object: `kind`, `count`, `worst`, `at` (an
-/// input index) and the `message` front ends print.
+/// One finding of the sampling check as a JSON object: `kind`, `count`, `worst` (a number
+/// written as the coordinates are, always with a fraction or an exponent; `null` if it is
+/// not finite), `at` (an input index) and the `message` front ends print.
 fn finding_object(f: &Finding) -> String {
     let message = f.to_string().replace('\\', "\\\\").replace('"', "\\\"");
+    let worst = if f.worst.is_finite() { format!("{:?}", f.worst) } else { "null".into() };
     format!(
-        r#"{{"kind": "{}", "count": {}, "worst": {}, "at": {}, "message": "{message}"}}"#,
+        r#"{{"kind": "{}", "count": {}, "worst": {worst}, "at": {}, "message": "{message}"}}"#,
         f.kind.name(),
         f.count,
-        f.worst,
         f.at
     )
 }

@@ -86,12 +86,12 @@ pub fn write_reconstruction<W: Write>(
     rec: &Reconstruction,
 ) -> io::Result<()> {
     let mut out = Vec::new();
-    let points = rec.vertex_positions(points);
+    let vertices = rec.vertex_positions(points);
     match format {
         OutputFormat::Edges => return write_edges(w, &rec.edges),
         OutputFormat::Loops => loops(&mut out, rec)?,
-        OutputFormat::Wkt => wkt::wkt(&mut out, points, rec)?,
-        OutputFormat::GeoJson => geojson::geojson(&mut out, points, rec)?,
+        OutputFormat::Wkt => wkt::wkt(&mut out, vertices, rec)?,
+        OutputFormat::GeoJson => geojson::geojson(&mut out, points.len(), vertices, rec)?,
     }
     w.write_all(&out)?;
     w.flush()
@@ -241,6 +241,16 @@ mod tests {
         let path = text(GeoJson, &SQUARE, &path());
         let lines = r#"{"type": "MultiLineString", "coordinates": [[[0.0, 0.0], [1.0, 1.0]], [[1.0, 0.0], [0.0, 1.0]]]}"#;
         assert!(path.contains(lines) && path.contains(r#""status": "collinear""#), "{path}");
+        // Vertices of the method's own: `points` counts the input, `vertices` the positions.
+        let own = Reconstruction {
+            edges: vec![[0, 1]],
+            paths: vec![vec![0, 1]],
+            vertices: crate::result::Vertices::New(vec![[0.5, 0.0], [0.5, 1.0]]),
+            ..self::path()
+        };
+        let own = text(GeoJson, &SQUARE, &own);
+        let counts = r#""points": 4, "vertices": 2, "edges": 1, "loops": 0, "paths": 1"#;
+        assert!(own.contains(counts) && own.contains("[[0.5, 0.0], [0.5, 1.0]]"), "{own}");
         let stuck = Reconstruction {
             status: Status::SculptingStuck { left_out: vec![2, 5] },
             left_out: crate::result::inside_left_out(&[2, 5]),
@@ -258,7 +268,7 @@ mod tests {
         };
         let flagged = Reconstruction { diagnosis: vec![finding], ..self::square() };
         let flagged = text(GeoJson, &SQUARE, &flagged);
-        let diagnosis = r#""warning": true, "diagnosis": [{"kind": "small-loops", "count": 1, "worst": 3, "at": 0, "message": "1 loop(s) of fewer than 7 points"#;
+        let diagnosis = r#""warning": true, "diagnosis": [{"kind": "small-loops", "count": 1, "worst": 3.0, "at": 0, "message": "1 loop(s) of fewer than 7 points"#;
         assert!(flagged.contains(diagnosis), "{flagged}");
     }
 }
