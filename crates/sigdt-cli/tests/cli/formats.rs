@@ -65,7 +65,12 @@ fn npy_arrays_and_gzip_files() {
     let gz = gz.finish().unwrap();
     fs::write(d.join("square.csv.gz"), &gz).unwrap();
     sigdt_in(d, &["reconstruct", "square.csv.gz"], None).ok().stdout_is(SQUARE);
-    sigdt_in(d, &["reconstruct", "-"], None).ok();
+    // Empty input reconstructs to nothing, and says so (issue 31: an empty export fed to a
+    // pipeline passed unnoticed).
+    let empty = sigdt_in(d, &["reconstruct", "-", "--format", "geojson"], None);
+    empty.expect(0);
+    assert_eq!(empty.stderr, "sigdt: warning: fewer than three distinct points\n");
+    assert!(empty.stdout.contains(r#""warning": true"#), "{}", empty.stdout);
     fs::write(d.join("broken.xy.gz"), &gz[..gz.len() / 2]).unwrap();
     sigdt_in(d, &["reconstruct", "broken.xy.gz"], None).error(&["broken.xy.gz"]);
 }

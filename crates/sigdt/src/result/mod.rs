@@ -205,7 +205,9 @@ impl Status {
     }
 
     /// True when the status says the result is not a faithful reading of curves: sculpting
-    /// got stuck, edges meet at junctions, or they zigzag. Front ends warn then.
+    /// got stuck, edges meet at junctions, or they zigzag; or there is no curve at all
+    /// (fewer than three distinct points: an empty export fed to a pipeline must not pass
+    /// unnoticed). Front ends warn then.
     pub fn is_warning(&self) -> bool {
         matches!(
             self,
@@ -214,6 +216,7 @@ impl Status {
                 | Status::Noisy
                 | Status::Crossing
                 | Status::Unfinished
+                | Status::TooFewPoints
         )
     }
 
