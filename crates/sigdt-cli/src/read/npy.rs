@@ -14,6 +14,7 @@
 use std::io::Read;
 
 use anyhow::{bail, Context, Result};
+use sigdt::io::quoted;
 use sigdt::Point;
 
 /// The magic bytes of a `.npy` file.
@@ -58,22 +59,25 @@ pub fn read(mut reader: impl Read, name: &str, max_points: usize) -> Result<Vec<
         .filter(|d| !d.is_empty())
         .map(|d| d.parse::<usize>())
         .collect::<Result<_, _>>()
-        .with_context(|| format!("{name}: .npy shape {shape} is not a tuple of sizes"))?;
+        .with_context(|| format!("{name}: .npy shape {} is not a tuple of sizes", quoted(shape)))?;
     let n = match dims.as_slice() {
         [n, 2] => *n,
         [0] => 0,
         _ => bail!(
-            "{name}: the array has shape {shape}; sigdt reads (n, 2) arrays of x and y: save \
-             points[:, :2] (np.save(path, np.asarray(points)[:, :2]))"
+            "{name}: the array has shape {}; sigdt reads (n, 2) arrays of x and y: save \
+             points[:, :2] (np.save(path, np.asarray(points)[:, :2]))",
+            quoted(shape)
         ),
     };
     if n > max_points {
         bail!("{name}: more than {max_points} points ({n}; raise --max-points to read more)");
     }
-    let dtype = Dtype::parse(descr.trim_matches(['\'', '"'])).with_context(|| {
+    let descr = descr.trim_matches(['\'', '"']);
+    let dtype = Dtype::parse(descr).with_context(|| {
         format!(
-            "{name}: .npy dtype {descr} is not a real number type sigdt reads (save as float64: \
-             np.save(path, points.astype(float)))"
+            "{name}: .npy dtype {} is not a real number type sigdt reads (save as float64: \
+             np.save(path, points.astype(float)))",
+            quoted(descr)
         )
     })?;
     let values = read_values(&mut reader, &dtype, n, fortran, name)?;
@@ -245,7 +249,7 @@ mod tests {
     #[test]
     fn other_arrays_are_refused_saying_why() {
         let err = parse(&npy("<f8", "(2, 3)", false, &[0; 48])).unwrap_err().to_string();
-        assert!(err.contains("shape (2, 3)") && err.contains("points[:, :2]"), "{err}");
+        assert!(err.contains("shape '(2, 3)'") && err.contains("points[:, :2]"), "{err}");
         let err = parse(&npy("<c16", "(1, 2)", false, &[0; 32])).unwrap_err().to_string();
         assert!(err.contains("dtype '<c16'"), "{err}");
         let err = parse(&npy("<f8", "(2, 2)", false, &[0; 20])).unwrap_err().to_string();
@@ -283,5 +287,15 @@ mod tests {
             parse(&npy("<i8", "(1, 2)", false, &fine)).unwrap(),
             [[9007199254740992.0, -9007199254740992.0]]
         );
+    }
+
+    #[test]
+    fn header_values_in_messages_are_quoted() {
+        // Fuzz finding 12: descr and shape reached the terminal raw (ESC) and whole.
+        let err = parse(&npy("\u{1b}[2J", "(1, 2)", false, &[0; 16])).unwrap_err().to_string();
+        assert!(err.contains(r"dtype '\u{1b}[2J'"), "{err}");
+        let long = format!("({})", vec!["1"; 1000].join(","));
+        let err = parse(&npy("<f8", &long, false, &[])).unwrap_err().to_string();
+        assert!(err.len() < 300, "{err}");
     }
 }

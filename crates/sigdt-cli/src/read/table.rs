@@ -272,7 +272,10 @@ fn choose(
     header: Option<&[String]>,
     width: usize,
 ) -> Result<(usize, usize), String> {
-    let names = || header.map(|h| h.join(", ")).unwrap_or_default();
+    let names = || {
+        let quoted_names = header.map(|h| h.iter().map(|n| quoted(n)).collect::<Vec<_>>());
+        quoted_names.map(|n| n.join(", ")).unwrap_or_default()
+    };
     let find = |wanted: &str| {
         header.and_then(|h| h.iter().position(|n| n.trim().eq_ignore_ascii_case(wanted)))
     };
@@ -387,9 +390,15 @@ mod tests {
             "t.csv:2: column 'y': 'zero' is not a number"
         );
         let err = parse("a,b,c\n1,2,3\n", None).unwrap_err().to_string();
-        assert_eq!(err, "t.csv: a table of 3 columns (a, b, c): choose x and y with --columns X,Y");
+        assert_eq!(
+            err,
+            "t.csv: a table of 3 columns ('a', 'b', 'c'): choose x and y with --columns X,Y"
+        );
+        // Fuzz finding 13: header names reached the terminal raw and whole.
+        let err = parse("a\u{1b}[2J,b,c\n1,2,3\n", None).unwrap_err().to_string();
+        assert!(err.contains(r"('a\u{1b}[2J', 'b', 'c')"), "{err}");
         let err = parse("a,b,c\n1,2,3\n", Some("a,q")).unwrap_err().to_string();
-        assert_eq!(err, "t.csv: --columns: no column 'q' (the columns: a, b, c)");
+        assert_eq!(err, "t.csv: --columns: no column 'q' (the columns: 'a', 'b', 'c')");
         let err = parse("1,2,3\n", Some("x,y")).unwrap_err().to_string();
         assert!(err.contains("no header row"), "{err}");
         assert!(parse("1,2,3\n", Some("1,5")).unwrap_err().to_string().contains("column 5"));

@@ -306,7 +306,7 @@ const SHOWN_CHARS: usize = 40;
 
 /// `token` as an error message shows it: in single quotes, control and other invisible
 /// characters escaped (a crafted file cannot drive the terminal), cut after
-/// [`SHOWN_CHARS`] characters. Every reader's messages quote input through it.
+/// 40 characters. Every reader's messages quote input through it.
 ///
 /// ```
 /// assert_eq!(sigdt::io::quoted("a\x1b[2J"), r"'a\u{1b}[2J'");
