@@ -1,4 +1,4 @@
-//! Progress of one long run (`view`, `render`) on stderr: a spinner line naming the stage and
+//! Progress of one long run (`view`, `render`, `eval`) on stderr: a spinner line naming the stage and
 //! the time so far, drawn only when stderr is a terminal and cleared when the run ends, so
 //! scripts and pipes see nothing of it.
 

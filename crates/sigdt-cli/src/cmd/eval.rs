@@ -7,6 +7,7 @@ use clap::Args;
 use sigdt::{Method, Options};
 
 use crate::input::{edges_of, Input};
+use crate::progress::{thousands, Stages};
 
 /// `sigdt eval`.
 #[derive(Debug, Args)]
@@ -28,6 +29,8 @@ pub struct EvalArgs {
 
 /// `sigdt eval`.
 pub fn run(args: &EvalArgs, input: &Input) -> Result<()> {
+    let progress = Stages::new("eval");
+    progress.stage(format!("reading {}", args.input.display()));
     let points = input.points(&args.input)?;
     let gt = edges_of(&args.gt, points.len(), "--gt")?;
     let (label, edges) = match &args.edges {
@@ -37,8 +40,22 @@ pub fn run(args: &EvalArgs, input: &Input) -> Result<()> {
             (args.method.to_string(), sigdt::reconstruct(&points, &options)?.edges)
         }
     };
+    progress.stage(format!(
+        "comparing {} edges with {}",
+        thousands(edges.len()),
+        thousands(gt.len())
+    ));
     let m = sigdt_lab::eval::evaluate(&points, &edges, &gt)?;
+    // The graph-based epsilon queries a k-d tree at 64 places an edge: on a well-sampled
+    // curve about 50 µs an edge on one core (docs/reliability.md), so the spinner says how
+    // long to expect.
+    let expected = gt.len() as f64 * 50e-6;
+    progress.stage(format!(
+        "epsilon of the ground truth ({} edges, about {expected:.0} s on one core)",
+        thousands(gt.len())
+    ));
     let epsilon = sigdt_lab::eval::graph_epsilon(&points, &gt)?;
+    drop(progress);
     let opt = |v: Option<f64>| v.map_or("undefined".to_string(), |v| format!("{v:.6e}"));
     let mut lines = vec![
         format!("result:             {label}"),
