@@ -58,7 +58,7 @@ fn npy_arrays_and_gzip_files() {
     let at = three.windows(6).position(|w| w == b"(4, 2)").unwrap();
     three[at..at + 6].copy_from_slice(b"(2, 4)");
     fs::write(d.join("wide.npy"), &three).unwrap();
-    sigdt_in(d, &["reconstruct", "wide.npy"], None).error(&["wide.npy", "shape (2, 4)"]);
+    sigdt_in(d, &["reconstruct", "wide.npy"], None).error(&["wide.npy", "shape '(2, 4)'"]);
 
     let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::default());
     gz.write_all(b"x,y\n0,0\n1,0\n1,1\n0,1\n").unwrap();
@@ -87,7 +87,7 @@ fn csv_tables_with_chosen_columns() {
     sigdt_in(d, &["reconstruct", "t.csv", "--columns", "x,y"], None).error(&[
         "t.csv",
         "no column 'x'",
-        "id, name, lon, lat",
+        "'id', 'name', 'lon', 'lat'",
     ]);
     sigdt_in(d, &["reconstruct", "t.csv", "--columns", "3"], None).usage_error();
     fs::write(d.join("w.csv"), "a,b,c\n0,0,5\n").unwrap();
