@@ -17,4 +17,5 @@
 pub mod curves;
 pub mod dataset;
 pub mod eval;
+mod power_of_two;
 pub mod render;

@@ -37,6 +37,7 @@ use std::path::Path;
 use svgtypes::{PathParser, PathSegment, SimplePathSegment, SimplifyingPathParser};
 
 use super::eps_sampling::MAX_SEGMENTS;
+use crate::power_of_two::scale;
 use sigdt::internals::distance;
 use sigdt::{Error, Point, Result};
 
@@ -60,7 +61,7 @@ impl BezierPath {
     /// The path with every control point multiplied by `2^power` (exactly, in the normal
     /// range).
     pub fn scaled(&self, power: i32) -> BezierPath {
-        let s = |p: Point| p.map(|v| scale_by_power_of_two(v, power));
+        let s = |p: Point| p.map(|v| scale(v, power));
         let segments = self.segments.iter().map(|segment| segment.map(s)).collect();
         BezierPath { segments, closed: self.closed }
     }
@@ -374,7 +375,7 @@ fn scaled_to_fixed_size(d: &str) -> (Option<String>, i32) {
     if power == 0 {
         return (None, 0);
     }
-    let s = |v: f64| format!("{:?}", scale_by_power_of_two(v, power));
+    let s = |v: f64| format!("{:?}", scale(v, power));
     let mut out = String::with_capacity(d.len());
     for segment in segments {
         let (letter, abs, numbers): (char, bool, Vec<String>) = match segment {
@@ -411,18 +412,7 @@ fn scaled_to_fixed_size(d: &str) -> (Option<String>, i32) {
 
 /// The power of two that brings `largest` into `[2^9, 2^10)`; 0 for zero or non-finite.
 pub(crate) fn fixed_size_power(largest: f64) -> i32 {
-    match largest.is_finite() && largest > 0.0 {
-        true => READ_SIZE_POWER - 1 - largest.log2().floor() as i32,
-        false => 0,
-    }
-}
-
-/// `v · 2^power`, exact unless the result leaves the normal range.
-pub(crate) fn scale_by_power_of_two(v: f64, power: i32) -> f64 {
-    // 2^k is a normal f64 for k in -1022..=1023: larger powers in two steps.
-    let half = power / 2;
-    let factor = |k: i32| f64::from_bits(((k + 1023) as u64) << 52);
-    v * factor(half) * factor(power - half)
+    crate::power_of_two::exponent_into(largest, READ_SIZE_POWER - 1)
 }
 
 /// Whether `at` misses `start` only by floating-point rounding of the path's coordinates:
@@ -465,11 +455,9 @@ fn check_arcs(d: &str, power: i32) -> std::result::Result<(), String> {
                 // The arc converter draws a radius up to 1e-5 as a straight line, an absolute
                 // bound: read at the fixed size, a radius that small against the drawing
                 // would turn an arc of the file into a line. Such an arc is refused instead.
-                let thin = |r: f64| {
-                    r.abs() > 0.0 && r.abs() <= 1e-5 && scale_by_power_of_two(r, -power) != r
-                };
+                let thin = |r: f64| r.abs() > 0.0 && r.abs() <= 1e-5 && scale(r, -power) != r;
                 if thin(rx) || thin(ry) {
-                    let [rx, ry] = [rx, ry].map(|r| scale_by_power_of_two(r, -power));
+                    let [rx, ry] = [rx, ry].map(|r| scale(r, -power));
                     return Err(format!(
                         "an elliptical arc of radii {rx:.1e} and {ry:.1e}: one is too small \
                          against the size of the drawing to draw as an arc"
@@ -478,7 +466,7 @@ fn check_arcs(d: &str, power: i32) -> std::result::Result<(), String> {
                 let size = arc_radius(at, end, rx, ry, x_axis_rotation);
                 if size.is_nan() || size > limit {
                     // The radius as the file gives it, not at the size it is read at.
-                    let size = scale_by_power_of_two(size, -power);
+                    let size = scale(size, -power);
                     return Err(format!(
                         "an elliptical arc of radius {size:.1e} (grown, as SVG does, to span its \
                          chord) would need more than {MAX_SEGMENTS} cubic segments"

@@ -42,8 +42,9 @@
 //! \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 //! \[OMW21\] S. Ohrhallinger, J. Peethambaran, A. Parakkat, T. Dey, R. Muthuganapathy.
 //! 2D Points Curve Reconstruction Survey and Benchmark. 2021.
-use super::bezier::{fixed_size_power, scale_by_power_of_two};
+use super::bezier::fixed_size_power;
 use super::BezierPath;
+use crate::power_of_two::scale;
 use sigdt::internals::{distance, KdTree};
 use sigdt::samplers::{cycle_edges, Sample};
 use sigdt::{Edge, Error, Point, Result, Triangulation};
@@ -193,7 +194,7 @@ pub fn eps_sample_at_density(
     let power = fixed_size_power(path.largest_coordinate());
     if power != 0 {
         let mut framed = eps_sample_at_density(&path.scaled(power), eps, offset, density)?;
-        let back = |v: f64| scale_by_power_of_two(v, -power);
+        let back = |v: f64| scale(v, -power);
         framed.sample.points.iter_mut().for_each(|p| *p = p.map(back));
         framed.lfs.iter_mut().for_each(|l| *l = back(*l));
         return Ok(framed);

@@ -3,6 +3,7 @@
 //!
 //! Every public metric validates here once, at its entry; the helpers behind it assume valid
 //! input. O(n + m log m).
+use crate::power_of_two::{exponent_into, pow2};
 use sigdt::{Edge, Error, Point, Result};
 
 /// Fails with [`Error::NonFinite`] on the first point with a NaN or infinite coordinate.
@@ -97,12 +98,8 @@ pub(crate) struct UnitScale([f64; 2]);
 impl UnitScale {
     pub(crate) fn of(coordinates: impl Iterator<Item = f64>) -> UnitScale {
         let largest = coordinates.fold(0.0f64, |m, c| m.max(c.abs()));
-        if largest == 0.0 || !largest.is_finite() {
-            return UnitScale([1.0, 1.0]);
-        }
-        // log2 of a subnormal is exact enough for its exponent.
-        let k = -(largest.log2().floor() as i32);
-        UnitScale([power_of_two(k / 2), power_of_two(k - k / 2)])
+        let k = exponent_into(largest, 0);
+        UnitScale([pow2(k / 2), pow2(k - k / 2)])
     }
 
     /// `p · 2^k`.
@@ -117,9 +114,4 @@ impl UnitScale {
         let [a, b] = self.0;
         area / a / a / b / b
     }
-}
-
-/// 2^k for |k| ≤ 1022.
-fn power_of_two(k: i32) -> f64 {
-    f64::from_bits(((1023 + k) as u64) << 52)
 }
