@@ -46,6 +46,13 @@ impl Input {
     }
 }
 
+/// The points of the file at `path`, in any format the commands read, without a limit: how
+/// `bench`, `gallery` and `sweep` read case files, so that a case may be gzipped or WKT like
+/// any input.
+pub fn points_of_file(path: &Path) -> Result<Vec<Point>> {
+    Input::new(usize::MAX, None).points(path)
+}
+
 /// The ground truth of `--gt`, if given, for `n` points (see [`edges_of`]).
 pub fn ground_truth(path: Option<&Path>, n: usize) -> Result<Option<Vec<Edge>>> {
     path.map(|path| edges_of(path, n, "--gt")).transpose()

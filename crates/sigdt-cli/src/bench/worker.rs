@@ -128,7 +128,7 @@ pub fn measure(
 
 /// The graph-based epsilon of the case (`sigdt_lab::eval::graph_epsilon`).
 pub fn graph_epsilon(points: &Path, gt: &Path) -> Result<f64> {
-    let pts = crate::read::points_of_file(points)?;
+    let pts = crate::input::points_of_file(points)?;
     let gt = sigdt::io::read_edges_of(gt, pts.len())?;
     Ok(sigdt_lab::eval::graph_epsilon(&pts, &gt)?)
 }
@@ -176,11 +176,11 @@ impl Truth {
 /// A case as read, sampled at `spacing` when known: its input points and what results are
 /// scored against.
 fn read_case(files: &CaseFiles, spacing: Option<f64>) -> Result<(Vec<Point>, Truth)> {
-    let pts = crate::read::points_of_file(&files.points)?;
+    let pts = crate::input::points_of_file(&files.points)?;
     let gt = sigdt::io::read_edges_of(&files.gt, pts.len())?;
     let positions = match &files.truth {
         Some(path) => {
-            let clean = crate::read::points_of_file(path)?;
+            let clean = crate::input::points_of_file(path)?;
             if clean.len() != pts.len() {
                 anyhow::bail!(
                     "{}: the clean positions have {} points, the case has {}",
@@ -195,7 +195,7 @@ fn read_case(files: &CaseFiles, spacing: Option<f64>) -> Result<(Vec<Point>, Tru
     };
     let curve = match &files.curve {
         Some((points, edges)) => {
-            let curve = crate::read::points_of_file(points)?;
+            let curve = crate::input::points_of_file(points)?;
             let edges = sigdt::io::read_edges_of(edges, curve.len())?;
             if edges.is_empty() {
                 anyhow::bail!("{}: the curve has no edge", points.display());

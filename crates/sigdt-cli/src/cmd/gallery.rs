@@ -214,7 +214,7 @@ fn picture(
     dir: &Path,
 ) -> Result<(String, String)> {
     let files = case.files(&args.data);
-    let points = crate::read::points_of_file(&files.points)?;
+    let points = crate::input::points_of_file(&files.points)?;
     let gt = sigdt::io::read_edges_of(&files.gt, points.len())?;
     let rec = sigdt::reconstruct(&points, &Options { method, ..Options::default() })
         .with_context(|| format!("{method} on {}", case.name))?;

@@ -71,17 +71,6 @@ pub fn points(reader: impl Read, name: &str, how: Reading<'_>) -> Result<Points>
     uncompressed(reader, name, name, how)
 }
 
-/// The points of the file at `path`, in any format of this module, without a limit: how
-/// `bench`, `gallery` and `sweep` read case files, so that a case may be gzipped or WKT like
-/// any input.
-pub fn points_of_file(path: &Path) -> Result<Vec<Point>> {
-    let name = path.display().to_string();
-    let file = std::fs::File::open(path)
-        .map_err(|source| sigdt::Error::Io { path: name.clone(), source })?;
-    let how = Reading { max_points: usize::MAX, columns: None };
-    Ok(points(file, &name, how)?.points)
-}
-
 /// The formats of [`uncompressed`], found before reading.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Format {

@@ -160,11 +160,7 @@ pub fn read(
 /// otherwise when every field that is not empty is. So a headerless table whose first row
 /// has a name, `NA` or nothing in a column not read loses no point.
 fn is_header(fields: &[String], columns: Option<&Columns>) -> bool {
-    let is_name = |field: &str| {
-        let unsigned = field.trim_start_matches(['+', '-']).trim_start_matches('.');
-        let numeric_start = unsigned.chars().next().is_some_and(char::is_numeric);
-        field.chars().any(char::is_alphabetic) && !numeric_start && field.parse::<f64>().is_err()
-    };
+    let is_name = |field: &str| sigdt::io::is_header_name(field);
     match columns {
         Some(Columns { x: Column::Number(x), y: Column::Number(y) }) => {
             [x, y].iter().all(|&&k| fields.get(k - 1).is_some_and(|f| is_name(f)))

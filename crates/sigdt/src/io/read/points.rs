@@ -279,12 +279,22 @@ pub fn wkt_geometry(line: &str) -> Option<&'static str> {
 /// `0x1p3`, `1_000` or full-width digits are errors, not a header that silently drops a
 /// point.
 fn is_header(line: &str) -> bool {
-    let name = |field: &str| {
-        let unsigned = field.trim_start_matches(['+', '-']).trim_start_matches('.');
-        let numeric_start = unsigned.chars().next().is_some_and(char::is_numeric);
-        field.chars().any(char::is_alphabetic) && !numeric_start && field.parse::<f64>().is_err()
-    };
-    fields(line).all(name)
+    fields(line).all(is_header_name)
+}
+
+/// Whether a field of a first line is a column name rather than a value: it has a letter and
+/// does not start like a number (a digit of any script, or a sign or point before one). The
+/// rule of the plain reader's header, shared with the CLI's tables.
+///
+/// ```
+/// use sigdt::io::is_header_name;
+/// assert!(is_header_name("lon") && is_header_name("X coordinate"));
+/// assert!(!is_header_name("1.5") && !is_header_name("0x1p3") && !is_header_name("NaN"));
+/// ```
+pub fn is_header_name(field: &str) -> bool {
+    let unsigned = field.trim_start_matches(['+', '-']).trim_start_matches('.');
+    let numeric_start = unsigned.chars().next().is_some_and(char::is_numeric);
+    field.chars().any(char::is_alphabetic) && !numeric_start && field.parse::<f64>().is_err()
 }
 
 #[cfg(test)]
