@@ -27,7 +27,7 @@ use std::io::BufRead;
 use std::str::FromStr;
 
 use anyhow::{anyhow, Result};
-use sigdt::io::{quoted, MAX_LINE};
+use sigdt::io::{max_lines, quoted, too_many_lines, MAX_LINE};
 use sigdt::Point;
 
 /// The x and y columns of `--columns`.
@@ -111,7 +111,7 @@ pub fn read(
     columns: Option<&Columns>,
     max_points: usize,
 ) -> Result<Table> {
-    let mut records = Records::new(reader, name);
+    let mut records = Records::new(reader, name, max_lines(max_points));
     let Some((first_line, first)) = records.next()? else {
         return Ok(Table { points: Vec::new(), how: "an empty table".to_string() });
     };
@@ -182,11 +182,14 @@ struct Records<'a, R> {
     buf: Vec<u8>,
     /// 1-based number of the last line read.
     line: usize,
+    /// Line `max_lines + 1` is refused, blank and comment lines included, so that an endless
+    /// stream of them ends (see [`max_lines`]).
+    max_lines: usize,
 }
 
 impl<'a, R: BufRead> Records<'a, R> {
-    fn new(reader: R, name: &'a str) -> Self {
-        Records { reader, name, buf: Vec::new(), line: 0 }
+    fn new(reader: R, name: &'a str, max_lines: usize) -> Self {
+        Records { reader, name, buf: Vec::new(), line: 0, max_lines }
     }
 
     /// The next record with content and the number of its first line; `None` at the end.
@@ -251,6 +254,10 @@ impl<'a, R: BufRead> Records<'a, R> {
             self.reader.consume(take);
             if ends {
                 self.line += 1;
+                if self.line > self.max_lines {
+                    let message = too_many_lines(self.max_lines);
+                    return Err(anyhow!("{name}:{}: {message}", self.line));
+                }
                 return Ok(true);
             }
         }
@@ -442,6 +449,11 @@ mod tests {
         let reader = std::io::BufReader::new(Zeros);
         let err = read(reader, "z", Some(&columns), 9).unwrap_err().to_string();
         assert_eq!(err, format!("z:1: line longer than {MAX_LINE} bytes"));
+        // Endless blank lines (`yes '' | sigdt reconstruct - --columns 1,2`) end (G4).
+        let reader = std::io::BufReader::new(std::io::repeat(b'\n'));
+        let err = read(reader, "y", Some(&columns), 9).unwrap_err().to_string();
+        let limit = max_lines(9);
+        assert_eq!(err, format!("y:{}: {}", limit + 1, too_many_lines(limit)));
         // RFC 4180: a line break inside quotes, in a column not read (G21).
         let text = "name,x,y\n\"two\nlines\",1,2\n\"c\",3,4\n";
         let table = read(text.as_bytes(), "t.csv", None, 9).unwrap();

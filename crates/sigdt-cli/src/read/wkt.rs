@@ -128,10 +128,16 @@ impl<'a, R: BufRead> Tokens<'a, R> {
         Ok(())
     }
 
-    /// Skips white space and comments, counting lines.
+    /// Skips white space and comments, counting lines. More than [`MAX_LINE`] bytes of them
+    /// in a row is refused, so that an endless stream of them (`yes ''`) ends.
     fn skip_separators(&mut self) -> Result<()> {
         let mut in_comment = false;
+        let mut skipped = 0;
         loop {
+            if skipped > MAX_LINE {
+                let message = format!("more than {MAX_LINE} bytes of white space and comments");
+                return Err(anyhow!("{}:{}: WKT: {message}", self.name, self.reader_line));
+            }
             let chunk = self.fill()?;
             let (mut used, mut newlines, mut found) = (0, 0, false);
             for &byte in chunk {
@@ -149,6 +155,7 @@ impl<'a, R: BufRead> Tokens<'a, R> {
             }
             self.consume(used);
             self.reader_line += newlines;
+            skipped += used;
             if found || self.eof {
                 return Ok(());
             }
@@ -483,6 +490,31 @@ mod tests {
         let text = format!("POINT ({} 0)", "1".repeat(sigdt::io::MAX_LINE + 1));
         let err = parse(&text).unwrap_err().to_string();
         assert_eq!(err, "t.wkt:1: WKT: token longer than 1048576 bytes");
+    }
+
+    #[test]
+    fn endless_white_space_or_comments_end() {
+        // `(echo 'MULTIPOINT ((0 0)'; yes '') | sigdt reconstruct -` ended never (G4).
+        for filler in [&b"\n"[..], b"# c\n", b" "] {
+            let start = &b"MULTIPOINT ((0 0)"[..];
+            let endless = std::io::BufReader::new(std::io::Read::chain(start, Cycle(filler, 0)));
+            let err = read(endless, "t.wkt", 9).unwrap_err().to_string();
+            let want = "WKT: more than 1048576 bytes of white space and comments";
+            assert!(err.starts_with("t.wkt:") && err.ends_with(want), "{err}");
+        }
+    }
+
+    /// `bytes` repeated forever.
+    struct Cycle<'a>(&'a [u8], usize);
+
+    impl std::io::Read for Cycle<'_> {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            for b in buf.iter_mut() {
+                *b = self.0[self.1 % self.0.len()];
+                self.1 += 1;
+            }
+            Ok(buf.len())
+        }
     }
 
     #[test]

@@ -8,8 +8,8 @@ mod read;
 mod write;
 
 pub use read::{
-    is_header_name, parse_edges, parse_edges_of, parse_points, parse_points_at_most, quoted,
-    read_edges, read_edges_of, read_points, read_points_at_most, wkt_geometry, PointFormat,
-    MAX_LINE, WKT_GEOMETRIES,
+    is_header_name, max_lines, parse_edges, parse_edges_of, parse_points, parse_points_at_most,
+    quoted, read_edges, read_edges_of, read_points, read_points_at_most, too_many_lines,
+    wkt_geometry, PointFormat, MAX_LINE, WKT_GEOMETRIES,
 };
 pub use write::{write_edges, write_reconstruction, OutputFormat};

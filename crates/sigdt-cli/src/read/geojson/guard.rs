@@ -10,6 +10,8 @@ use anyhow::anyhow;
 const MAX_DEPTH: usize = 127;
 /// The longest string read into memory, in bytes.
 const MAX_STRING: usize = 1 << 16;
+/// The most white space in a row, in bytes, so that an endless stream of it (`yes ''`) ends.
+const MAX_WHITESPACE: usize = 1 << 20;
 
 /// The bytes on their way to serde_json, refused where serde_json would hold unbounded
 /// memory: nesting deeper than its limit inside a skipped value (its `IgnoredAny` keeps a
@@ -25,6 +27,8 @@ pub(super) struct Guard<'a, R> {
     escaped: bool,
     /// The bytes so far of the string being read, if it is kept.
     kept: Option<usize>,
+    /// White space bytes in a row, outside strings.
+    whitespace: usize,
     line: usize,
     column: usize,
     refused: Option<&'static str>,
@@ -39,6 +43,7 @@ impl<'a, R: Read> Guard<'a, R> {
             in_string: false,
             escaped: false,
             kept: None,
+            whitespace: 0,
             line: 1,
             column: 0,
             refused: None,
@@ -80,6 +85,14 @@ impl<'a, R: Read> Guard<'a, R> {
     }
 
     fn outside_strings(&mut self, byte: u8) -> Result<(), &'static str> {
+        if byte.is_ascii_whitespace() {
+            self.whitespace += 1;
+            if self.whitespace > MAX_WHITESPACE {
+                return Err("more than 1048576 bytes of white space in a row");
+            }
+            return Ok(());
+        }
+        self.whitespace = 0;
         match byte {
             b'"' => {
                 self.in_string = true;

@@ -82,6 +82,16 @@ fn an_endless_array_stops_at_the_limit() {
 }
 
 #[test]
+fn endless_white_space_ends() {
+    // `(echo '{"type":"MultiPoint","coordinates":[[0,0]'; yes '') | sigdt reconstruct -` (G4).
+    let start = &br#"{"type":"MultiPoint","coordinates":[[0,0]"#[..];
+    let endless = start.chain(std::io::repeat(b'\n'));
+    let err = read(endless, "t.geojson", 9).unwrap_err().to_string();
+    let want = ":0: more than 1048576 bytes of white space in a row";
+    assert!(err.starts_with("t.geojson:") && err.ends_with(want), "{err}");
+}
+
+#[test]
 fn a_byte_order_mark_is_skipped() {
     let text = "\u{feff}{\"type\": \"Point\", \"coordinates\": [1, 2]}";
     assert_eq!(parse(text).unwrap(), [[1.0, 2.0]]);

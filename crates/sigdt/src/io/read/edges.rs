@@ -4,7 +4,7 @@ use std::fs::File;
 use std::io::{BufRead, BufReader};
 use std::path::Path;
 
-use super::lines::{pair, quoted, Lines};
+use super::lines::{max_lines, pair, quoted, Lines};
 use crate::error::{Error, Result};
 use crate::geometry::Edge;
 
@@ -39,7 +39,7 @@ pub fn parse_edges<R: BufRead>(reader: R, name: &str) -> Result<Vec<Edge>> {
 /// ```
 pub fn parse_edges_of<R: BufRead>(reader: R, name: &str, points: usize) -> Result<Vec<Edge>> {
     let most = points.saturating_mul(3);
-    let mut lines = Lines::new(reader, name);
+    let mut lines = Lines::new(reader, name).at_most_lines(max_lines(most));
     let mut edges = Vec::new();
     while let Some(line) = lines.next_content()? {
         let [i, j] = edge(line).map_err(|message| lines.error(message))?;

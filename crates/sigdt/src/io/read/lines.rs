@@ -13,6 +13,22 @@ use crate::error::{Error, Result};
 /// The longest line a reader accepts, in bytes (1 MiB), not counting the line ending.
 pub const MAX_LINE: usize = 1 << 20;
 
+/// The most lines, blank and comment lines included, an input of at most `max_points`
+/// records may have: two a record plus 2²⁰ (comments, a header, blank lines). Without such
+/// a bound an endless stream of blank lines (`yes ''`) would never end, since only records
+/// count towards `max_points`.
+pub fn max_lines(max_points: usize) -> usize {
+    max_points.saturating_mul(2).saturating_add(1 << 20)
+}
+
+/// Why line `max + 1` is refused by [`max_lines`].
+pub fn too_many_lines(max: usize) -> String {
+    format!(
+        "more than {max} lines, blank and comment lines included (two a point allowed, plus \
+         2^20): raise the limit with --max-points"
+    )
+}
+
 /// Lines of a stream, read into one reused buffer of at most [`MAX_LINE`] bytes.
 pub(super) struct Lines<'a, R> {
     reader: R,
@@ -30,6 +46,8 @@ pub(super) struct Lines<'a, R> {
     /// A reading error [`Lines::next_block`] found after whole lines, which it returned
     /// first: it comes at the next call, after any problem on those lines.
     failed: Option<Error>,
+    /// The most lines read before line `max_lines + 1` is refused (see [`max_lines`]).
+    max_lines: usize,
 }
 
 impl<'a, R: BufRead> Lines<'a, R> {
@@ -44,7 +62,14 @@ impl<'a, R: BufRead> Lines<'a, R> {
             unread: false,
             eof: false,
             failed: None,
+            max_lines: usize::MAX,
         }
+    }
+
+    /// Refuses the input at line `max + 1`, blank and comment lines included.
+    pub(super) fn at_most_lines(mut self, max: usize) -> Self {
+        self.max_lines = max;
+        self
     }
 
     /// The next line with content, without its comment and outer whitespace; `None` at the
@@ -128,6 +153,23 @@ impl<'a, R: BufRead> Lines<'a, R> {
             bytes.truncate(last_start);
             break;
         }
+        let lines_read = newlines + usize::from(last_start < bytes.len());
+        if self.number + lines_read > self.max_lines {
+            // Keep the lines up to the limit: a problem on them comes first.
+            let room = self.max_lines - self.number;
+            let end = match room.checked_sub(1) {
+                Some(last) => memchr::memchr_iter(b'\n', &bytes).nth(last).map_or(0, |i| i + 1),
+                None => 0,
+            };
+            bytes.truncate(end);
+            newlines = room;
+            last_start = end;
+            let failure = self.error_at(self.max_lines + 1, too_many_lines(self.max_lines));
+            if bytes.is_empty() {
+                return Err(failure);
+            }
+            self.failed = Some(failure);
+        }
         if bytes.is_empty() {
             return Ok(None);
         }
@@ -180,6 +222,9 @@ impl<'a, R: BufRead> Lines<'a, R> {
             }
         }
         self.number += usize::from(any);
+        if self.number > self.max_lines {
+            return Err(self.error(too_many_lines(self.max_lines)));
+        }
         Ok(any)
     }
 

@@ -19,7 +19,7 @@ use std::io::{BufRead, BufReader};
 use std::path::Path;
 
 use super::gtn::{gtn, is_gtn_header};
-use super::lines::{coordinate, fields, pair, too_many, Block, Lines};
+use super::lines::{coordinate, fields, max_lines, pair, too_many, Block, Lines};
 use crate::error::{Error, Result};
 use crate::geometry::Point;
 
@@ -108,7 +108,7 @@ pub fn parse_points_at_most<R: BufRead>(
     format: Option<PointFormat>,
     max_points: usize,
 ) -> Result<Vec<Point>> {
-    let mut lines = Lines::new(reader, name);
+    let mut lines = Lines::new(reader, name).at_most_lines(max_lines(max_points));
     let format = match format {
         Some(format) => format,
         None => match lines.next_content()? {
@@ -308,8 +308,8 @@ mod tests {
     }
 
     /// The plain reader one line at a time, as it was before blocks: the reference.
-    fn plain_by_line(text: &[u8], max_points: usize) -> Result<Vec<Point>> {
-        let mut lines = Lines::new(text, "t.xy");
+    fn plain_by_line(text: &[u8], max_points: usize, max_lines: usize) -> Result<Vec<Point>> {
+        let mut lines = Lines::new(text, "t.xy").at_most_lines(max_lines);
         let mut points = Vec::new();
         let mut first = true;
         while let Some(line) = lines.next_content()? {
@@ -367,16 +367,42 @@ mod tests {
                 text.pop();
             }
             let max_points = if rng.below(3) == 0 { rng.below(lines + 1) } else { usize::MAX };
+            let max_lines = if rng.below(3) == 0 { rng.below(lines + 2) } else { usize::MAX };
             let (block, batch) = (1 + rng.below(24), 1 + rng.below(4));
-            let mut reader = Lines::new(&text[..], "t.xy");
+            let mut reader = Lines::new(&text[..], "t.xy").at_most_lines(max_lines);
             let got = plain_in_blocks(&mut reader, max_points, block, batch);
-            let want = plain_by_line(&text, max_points);
+            let want = plain_by_line(&text, max_points, max_lines);
             let shown = |r: &Result<Vec<Point>>| match r {
                 Ok(points) => format!("{points:?}"),
                 Err(e) => e.to_string().split(": this is").next().unwrap().to_string(),
             };
             let text = String::from_utf8_lossy(&text);
             assert_eq!(shown(&got), shown(&want), "case {case}, {block}x{batch}: {text:?}");
+        }
+    }
+
+    #[test]
+    fn an_endless_stream_of_blank_lines_is_refused_after_the_line_limit() {
+        // `yes ''` and `yes '#'`: no point ever counts towards the point limit.
+        for line in [&b"\n"[..], b"#\n", b" \r\n"] {
+            let endless = std::io::BufReader::new(Cycle(line, 0));
+            let err = parse_points_at_most(endless, "yes", None, 3).unwrap_err();
+            let limit = max_lines(3);
+            let want = format!("yes:{}: {}", limit + 1, super::super::lines::too_many_lines(limit));
+            assert_eq!(err.to_string(), want);
+        }
+    }
+
+    /// `line` repeated forever.
+    struct Cycle<'a>(&'a [u8], usize);
+
+    impl std::io::Read for Cycle<'_> {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            for b in buf.iter_mut() {
+                *b = self.0[self.1 % self.0.len()];
+                self.1 += 1;
+            }
+            Ok(buf.len())
         }
     }
 
