@@ -120,7 +120,8 @@ doc:
 ## total, CGAL (when libcgal-dev is installed), memory per point, one thread against two;
 ## then the whole `sigdt reconstruct` process against CGAL's, and `sigdt view` and `render`;
 ## then the slow baselines (FITCONNECT, STRETCHDENOISE, DISCUR, OPTIMALTRANSPORT) against
-## SIG-CONNECT2D from 10^3 to 10^5 points.
+## SIG-CONNECT2D from 10^3 to 10^5 points, SIG-AUTO on a uniform scatter, and every method
+## on its worst input (docs/reliability.md) at 1, 2 and 4·10^4 points (about 2 minutes).
 SIZES ?= 1e3,1e4,1e5,1e6
 CGAL_TOOL := $(TARGET_DIR)/cgal-delaunay
 bench: build
@@ -132,6 +133,8 @@ bench: build
 	  --methods sig-connect2d,fit-connect,stretch-denoise,discur,optimal-transport --limit 30
 	$(CARGO) run --release --locked -p sigdt --example methods -- --input scatter \
 	  --sizes 1e4,2e4,4e4,8e4 --methods sig-auto --limit 30
+	$(CARGO) run --release --locked -p sigdt --example methods -- --input worst \
+	  --sizes 1e4,2e4,4e4 --limit 30
 
 ## man: the man pages of sigdt and its subcommands in target/man (from the clap definitions;
 ## `man -l target/man/sigdt.1`). Shell completions: `sigdt completions bash|zsh|fish`.

@@ -12,7 +12,9 @@
 //! `case | n | method | status | edges | loops | paths | ms` (see with `--nocapture`).
 //! The 10⁷-point run is `#[ignore]`d: `cargo test --release --test degenerate -- --ignored`.
 use sigdt::internals::check_reconstruction;
-use sigdt::samplers::{cycle_edges, random_closed_curve, Rng, Sample};
+use sigdt::samplers::{
+    cocircular_lattice, cycle_edges, line_and_point, random_closed_curve, Rng, Sample,
+};
 use sigdt::{reconstruct, Edge, Error, Method, Options, Point, Reconstruction, Status, Vertices};
 use std::time::Instant;
 
@@ -425,8 +427,7 @@ fn a_long_line_with_one_point_off_without_leaf_elimination() {
     // (43 s at 10^5), O(1) with the boundary's star counts. Debug builds check the counts
     // against the stars after inflating and after sculpting.
     let n = size(100_000, 5_000);
-    let mut points: Vec<Point> = (0..n).map(|i| [i as f64, 0.0]).collect();
-    points.push([n as f64 / 2.0 + 0.5, 1.0]);
+    let points = line_and_point(n);
     for method in [Method::SigConnect2d, Method::Connect2d] {
         let options = Options { method, leaf_elimination: false };
         let start = Instant::now();
@@ -510,61 +511,13 @@ fn square_grid_100() {
     square_grid(size(100, 40));
 }
 
-/// Every integer point on `x² + y² = r²`, `r = ∏ p^e` for the primes `p ≡ 1 (mod 4)` given
-/// as `(a, b, e)` with `p = a² + b²`: the products of `πᵏ π̄²ᵉ⁻ᵏ` over the Gaussian primes
-/// `π = a + bi`, times the four units. `4 ∏ (2e + 1)` points, in counter-clockwise order
-/// from angle 0, exactly cocircular.
-fn lattice_circle(primes: &[(i64, i64, u32)]) -> (i64, Vec<[i64; 2]>) {
-    let mul = |[a, b]: [i64; 2], [c, d]: [i64; 2]| [a * c - b * d, a * d + b * c];
-    let power = |z: [i64; 2], k: u32| (0..k).fold([1, 0], |w, _| mul(w, z));
-    let mut points = vec![[1i64, 0]];
-    let mut r = 1i64;
-    for &(a, b, e) in primes {
-        r *= (a * a + b * b).pow(e);
-        points = points
-            .iter()
-            .flat_map(|&z| {
-                (0..=2 * e).map(move |k| mul(z, mul(power([a, b], k), power([a, -b], 2 * e - k))))
-            })
-            .collect();
-    }
-    points = points.iter().flat_map(|&[x, y]| [[x, y], [-y, x], [-x, -y], [y, -x]]).collect();
-    let angle = |p: &[i64; 2]| (p[1] as f64).atan2(p[0] as f64).rem_euclid(std::f64::consts::TAU);
-    points.sort_by(|p, q| angle(p).total_cmp(&angle(q)));
-    points.dedup();
-    let r2 = i128::from(r) * i128::from(r);
-    assert!(points.iter().all(|&[x, y]| i128::from(x).pow(2) + i128::from(y).pow(2) == r2));
-    assert!(points.iter().all(|p| p.iter().all(|c| c.abs() < 1 << 53)), "exact as f64");
-    (r, points)
-}
-
 #[test]
 fn exactly_cocircular_points_give_the_convex_polygon() {
     // r = 5²·13·17·29·37·41·53·61·73 ≈ 5.7e13 has 4·5·3⁸ = 131,220 lattice points; every
     // 131,220/100,000-th is kept. Debug: r = 5·13·17·29·37, 972 points.
-    let primes: &[(i64, i64, u32)] = if cfg!(debug_assertions) {
-        &[(1, 2, 1), (2, 3, 1), (1, 4, 1), (2, 5, 1), (1, 6, 1)]
-    } else {
-        &[
-            (1, 2, 2),
-            (2, 3, 1),
-            (1, 4, 1),
-            (2, 5, 1),
-            (1, 6, 1),
-            (4, 5, 1),
-            (2, 7, 1),
-            (5, 6, 1),
-            (3, 8, 1),
-        ]
-    };
-    let (_, lattice) = lattice_circle(primes);
-    let keep = size(100_000, lattice.len()).min(lattice.len());
-    let points: Vec<Point> = (0..keep)
-        .map(|k| lattice[k * lattice.len() / keep])
-        .map(|[x, y]| [x as f64, y as f64])
-        .collect();
+    let points = cocircular_lattice(size(100_000, 972));
     let s = closed(points, 6);
-    let case = format!("cocircular lattice {keep}");
+    let case = format!("cocircular lattice {}", s.points.len());
     for (method, rec) in run_all(&case, &s.points) {
         if method == Method::Connect2d {
             assert_eq!(rec.status, Status::Polygon, "{case}, {method}");
@@ -646,9 +599,8 @@ fn subnormal_coordinates() {
     // Exactly cocircular in units of the smallest subnormal 2^-1074: r = 5·13·17 = 1105,
     // 108 lattice points.
     let tiny = f64::from_bits(1);
-    let (_, lattice) = lattice_circle(&[(1, 2, 1), (2, 3, 1), (1, 4, 1)]);
     let points: Vec<Point> =
-        lattice.iter().map(|&[x, y]| [x as f64 * tiny, y as f64 * tiny]).collect();
+        cocircular_lattice(108).iter().map(|&[x, y]| [x * tiny, y * tiny]).collect();
     assert!(points.iter().flatten().all(|&c| c == 0.0 || c.is_subnormal()));
     connect_methods_are_exact("subnormal lattice circle", &closed(points, 12));
 }

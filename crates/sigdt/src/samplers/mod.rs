@@ -11,6 +11,8 @@
 //! - [`spiral_band`]: a long thin coiled band, the hard case for Delaunay insertion order.
 //! - [`regular_polygon`]: `k` points on a circle.
 //! - [`uniform_noise`], [`lfs_noise`] and [`add_outliers`]: perturbed copies of a sample.
+//! - [`cocircular_lattice`], [`zigzag`], [`tall_zigzag`], [`line_and_point`],
+//!   [`uniform_square`]: inputs that are no sampled curve, each some method's slowest.
 //!
 //! The research samplers (cubic Bézier paths from SVG files and their ε-sampling) are in the
 //! `sigdt-lab` crate.
@@ -22,11 +24,15 @@
 
 mod arc_length;
 mod blob;
+mod hostile;
 mod noise;
 mod polygon;
 mod spiral;
 
 pub use blob::{random_closed_curve, Blob, Modulation};
+pub use hostile::{
+    cocircular_lattice, line_and_point, tall_zigzag, uniform_square, zigzag, MAX_LATTICE_POINTS,
+};
 pub use noise::{add_outliers, lfs_noise, uniform_noise, MAX_OUTLIER_FRACTION};
 pub use polygon::regular_polygon;
 pub use spiral::spiral_band;
