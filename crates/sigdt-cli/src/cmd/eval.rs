@@ -46,10 +46,10 @@ pub fn run(args: &EvalArgs, input: &Input) -> Result<()> {
         thousands(gt.len())
     ));
     let m = sigdt_lab::eval::evaluate(&points, &edges, &gt)?;
-    // The graph-based epsilon queries a k-d tree at 64 places an edge: on a well-sampled
-    // curve about 50 µs an edge on one core (docs/reliability.md), so the spinner says how
+    // The graph-based epsilon measures 64 places an edge: on a well-sampled
+    // curve about 20 µs an edge on one core (docs/reliability.md), so the spinner says how
     // long to expect.
-    let expected = gt.len() as f64 * 50e-6;
+    let expected = gt.len() as f64 * 20e-6;
     progress.stage(format!(
         "epsilon of the ground truth ({} edges, about {expected:.0} s on one core)",
         thousands(gt.len())

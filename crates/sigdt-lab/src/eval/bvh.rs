@@ -103,11 +103,19 @@ impl SegmentTree {
         }
     }
 
+    /// A lower bound on the distance from `q` to node `n`'s box.
     fn box_distance(&self, n: u32, q: Point) -> f64 {
         let node = &self.nodes[n as usize];
         let dx = (node.lo[0] - q[0]).max(q[0] - node.hi[0]).max(0.0);
         let dy = (node.lo[1] - q[1]).max(q[1] - node.hi[1]).max(0.0);
-        dx.hypot(dy)
+        // Only pruning reads this, and every search keeps the least distance visited: a
+        // lower bound prunes less but finds the same. The root of the rounded sum is within
+        // a few units in the last place (hypot, exact to one, is 40% of an evaluation).
+        let d2 = dx * dx + dy * dy;
+        match d2.is_finite() {
+            true => d2.sqrt() * (1.0 - 8.0 * f64::EPSILON),
+            false => dx.hypot(dy),
+        }
     }
 
     fn build(&mut self, lo: usize, hi: usize) -> u32 {

@@ -106,21 +106,24 @@ pub fn epsilon(points: &[Point], gt: &[Edge], variant: EpsilonVariant) -> Result
     let samples: Vec<Point> = vertices.iter().map(|&v| points[v]).collect();
     let features = Features::new(points, &samples, &edges, terms)?;
     let mut eps = 0.0f64;
+    let mut near = Vec::new();
     for (a, arc) in features.arcs.iter().enumerate() {
         for [i, j] in arc_edges(arc) {
             let (p, q) = (points[i], points[j]);
             let at = |t: f64| [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
+            // One search an edge instead of one a parameter: its samples' nearest candidates.
+            let candidates = features.samples_near_edge(p, q, &mut near).then_some(&near[..]);
             let cap = REFINE * eps;
             let (mut best, mut best_k) = (0.0f64, 0);
             for k in 1..=SAMPLES {
-                let r = features.ratio(at(k as f64 / (SAMPLES + 1) as f64), a, cap);
+                let r = features.ratio(at(k as f64 / (SAMPLES + 1) as f64), candidates, a, cap);
                 if r > best {
                     (best, best_k) = (r, k);
                 }
             }
             eps = eps.max(best);
             if best > cap && best.is_finite() {
-                let f = |t: f64| features.ratio(at(t), a, cap);
+                let f = |t: f64| features.ratio(at(t), candidates, a, cap);
                 let step = 1.0 / (SAMPLES + 1) as f64;
                 let t = best_k as f64 * step;
                 eps = eps.max(golden_max(f, t - step, t + step, 1e-6));

@@ -52,6 +52,7 @@ pub(crate) struct Features<'a> {
     points: &'a [Point],
     vertex_point: Vec<usize>,
     samples: KdTree<'a>,
+    sample_points: &'a [Point],
     tree: SegmentTree,
     medial: SegmentTree,
     any_disjoint: Vec<bool>,
@@ -185,6 +186,7 @@ impl<'a> Features<'a> {
             points,
             vertex_point,
             samples: KdTree::new(samples),
+            sample_points: samples,
             tree: SegmentTree::new(segments, groups),
             medial: SegmentTree::new(medial, medial_groups),
             any_disjoint,
@@ -192,10 +194,30 @@ impl<'a> Features<'a> {
         })
     }
 
+    /// The samples that may be nearest to some point of the ground-truth edge `pq`, `None`
+    /// when there are too many for a scan to be faster than a search. Every point of `pq`
+    /// lies within `|pq| / 2` of `p` or `q`, both samples, and of the midpoint: its nearest
+    /// sample lies within `|pq|` of the midpoint.
+    pub(crate) fn samples_near_edge(&self, p: Point, q: Point, out: &mut Vec<u32>) -> bool {
+        const MOST: usize = 32;
+        out.clear();
+        let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
+        // A margin for the rounding of the midpoint and the radius.
+        self.samples.within(mid, distance(p, q) * (1.0 + 1e-9), out);
+        out.len() <= MOST
+    }
+
     /// `ratio(x)` for `x` on arc `a`; exact when above `cap`, otherwise some value ≤ `cap`
-    /// (the searches stop at the radius where the ratio can no longer exceed `cap`).
-    pub(crate) fn ratio(&self, x: Point, a: usize, cap: f64) -> f64 {
-        let d_p = self.samples.nearest(x, 1, u32::MAX).first().map_or(0.0, |&(d2, _)| d2.sqrt());
+    /// (the searches stop at the radius where the ratio can no longer exceed `cap`). `near`
+    /// holds `x`'s nearest sample (from [`Features::samples_near_edge`]), or is `None`.
+    pub(crate) fn ratio(&self, x: Point, near: Option<&[u32]>, a: usize, cap: f64) -> f64 {
+        let d_p = match near {
+            Some(near) => {
+                let d2 = near.iter().map(|&s| squared(x, self.sample_points[s as usize]));
+                d2.fold(f64::INFINITY, f64::min).sqrt()
+            }
+            None => self.samples.nearest(x, 1, u32::MAX).first().map_or(0.0, |&(d2, _)| d2.sqrt()),
+        };
         if d_p == 0.0 {
             return 0.0;
         }
@@ -252,6 +274,13 @@ fn turn(u: Point, v: Point, w: Point) -> f64 {
         return std::f64::consts::PI;
     }
     (a[0] * b[1] - a[1] * b[0]).atan2(a[0] * b[0] + a[1] * b[1]).abs()
+}
+
+/// The squared distance, computed as the k-d tree computes it: the same nearest distance
+/// whichever finds it.
+fn squared(p: Point, q: Point) -> f64 {
+    let (dx, dy) = (p[0] - q[0], p[1] - q[1]);
+    dx * dx + dy * dy
 }
 
 fn distance(p: Point, q: Point) -> f64 {
