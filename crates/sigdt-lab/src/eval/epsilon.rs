@@ -159,6 +159,7 @@ fn golden_max(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, tol: f64) -> f64
 
 #[cfg(test)]
 mod tests {
+    use super::super::grid::lerp;
     use super::*;
     use std::f64::consts::PI;
 
@@ -207,6 +208,48 @@ mod tests {
         let gt = [[0, 4], [1, 4], [1, 5], [2, 5], [2, 6], [3, 6], [3, 7], [0, 7]];
         let eps = graph_epsilon(&pts, &gt).unwrap();
         assert!(eps > 0.2 && eps < 0.6, "{eps}");
+    }
+
+    #[test]
+    fn an_edges_candidates_give_the_nearest_sample_of_every_place() {
+        // Random polylines (long edges beside dense runs, points of the input that are no
+        // sample): the ratio from an edge's candidates is the k-d tree's, bit for bit.
+        let mut rng = sigdt::samplers::Rng::new(5);
+        for case in 0..200 {
+            let n = 3 + rng.below(40);
+            let points: Vec<Point> = (0..n)
+                .map(|_| match rng.below(3) {
+                    0 => [rng.uniform() * 0.01, rng.uniform() * 0.01],
+                    _ => [rng.uniform(), rng.uniform()],
+                })
+                .collect();
+            let gt: Vec<Edge> = (1..n - 2).map(|i| [i - 1, i]).collect();
+            let edges = proper_edges(&gt);
+            let mut vertices: Vec<usize> = edges.iter().flatten().copied().collect();
+            vertices.sort_unstable();
+            vertices.dedup();
+            let samples: Vec<Point> = vertices.iter().map(|&v| points[v]).collect();
+            let terms = Terms { corner_turn: Some(1.0), pairs: true, medial: true };
+            let features = Features::new(&points, &samples, &edges, terms).unwrap();
+            let mut near = Vec::new();
+            for (a, arc) in features.arcs.iter().enumerate() {
+                for [i, j] in arc_edges(arc) {
+                    let (p, q) = (points[i], points[j]);
+                    let Some(near) = features.samples_near_edge(p, q, &mut near).then_some(&near)
+                    else {
+                        continue;
+                    };
+                    for k in 0..=20 {
+                        let x = lerp(p, q, k as f64 / 20.0);
+                        let (with, without) = (
+                            features.ratio(x, Some(near), a, 0.0),
+                            features.ratio(x, None, a, 0.0),
+                        );
+                        assert_eq!(with.to_bits(), without.to_bits(), "case {case}, edge {i} {j}");
+                    }
+                }
+            }
+        }
     }
 
     #[test]
