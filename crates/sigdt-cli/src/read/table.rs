@@ -275,9 +275,15 @@ fn choose(
     header: Option<&[String]>,
     width: usize,
 ) -> Result<(usize, usize), String> {
+    // The first few names: a header of hundreds would make a message no one reads.
+    const SHOWN: usize = 8;
     let names = || {
-        let quoted_names = header.map(|h| h.iter().map(|n| quoted(n)).collect::<Vec<_>>());
-        quoted_names.map(|n| n.join(", ")).unwrap_or_default()
+        let Some(header) = header else { return String::new() };
+        let shown: Vec<_> = header.iter().take(SHOWN).map(|n| quoted(n)).collect();
+        match header.len().checked_sub(SHOWN).filter(|&more| more > 0) {
+            Some(more) => format!("{}, and {more} more", shown.join(", ")),
+            None => shown.join(", "),
+        }
     };
     let find = |wanted: &str| {
         header.and_then(|h| h.iter().position(|n| n.trim().eq_ignore_ascii_case(wanted)))
@@ -402,6 +408,13 @@ mod tests {
         assert!(err.contains(r"('a\u{1b}[2J', 'b', 'c')"), "{err}");
         let err = parse("a,b,c\n1,2,3\n", Some("a,q")).unwrap_err().to_string();
         assert_eq!(err, "t.csv: --columns: no column 'q' (the columns: 'a', 'b', 'c')");
+        // Fuzz finding 14: a header of hundreds of names made a message of thousands of
+        // characters; the first eight are shown.
+        let wide: Vec<String> = (0..300).map(|i| format!("c{i}")).collect();
+        let text = format!("{}\n{}\n", wide.join(","), vec!["1"; 300].join(","));
+        let err = parse(&text, None).unwrap_err().to_string();
+        let want = "'c0', 'c1', 'c2', 'c3', 'c4', 'c5', 'c6', 'c7', and 292 more)";
+        assert!(err.contains(want) && err.len() < 200, "{err}");
         let err = parse("1,2,3\n", Some("x,y")).unwrap_err().to_string();
         assert!(err.contains("no header row"), "{err}");
         assert!(parse("1,2,3\n", Some("1,5")).unwrap_err().to_string().contains("column 5"));
