@@ -40,6 +40,11 @@ Input (INPUT is a file, or '-' for standard input):
   GeoJSON (.geojson .json)         FeatureCollection, Feature, any geometry: every
                                    position; also a JSON array of [x, y] pairs
   NumPy (.npy)                     an (n, 2) array of floats or integers
+  GeoPackage (.gpkg)               every vertex of a feature layer: --layer NAME, else the
+                                   only layer, else the only point layer; read in place
+  FlatGeobuf (.fgb)                every vertex of every feature
+  Shapefile (.shp)                 every vertex of every record; the coordinate system
+                                   from the .prj beside it
   gzip (.gz)                       any of these compressed, read as it is decompressed
   other extensions and stdin       the format is detected from the content
 Points are numbered from 0 in file order; all indices in the output refer to them.
@@ -72,7 +77,11 @@ Output formats (--format; default: from OUT's extension, else edges):
   wkt      POLYGON / MULTIPOLYGON / LINESTRING of the loops and paths   (.wkt)
   geojson  one Feature: the geometry, with status and counts as properties
                                                              (.geojson .json)
-  svg      a picture of the points, edges and filled loops   (.svg)";
+  svg      a picture of the points, edges and filled loops   (.svg)
+  gpkg     GeoPackage layers 'curves' (polygons with holes, paths as lines; method,
+           status, warning, diagnosis) and 'left_out' (points, input row, reason), in
+           the input's coordinate system or --crs                 (.gpkg)
+  fgb      FlatGeobuf: the same curves and left-out points in one layer (kind)  (.fgb)";
 
 /// Exit statuses, shown in `sigdt --help`.
 const EXIT_STATUS: &str = "\
@@ -103,12 +112,26 @@ pub struct Cli {
     /// numbers from 1, for example `--columns lon,lat` or `--columns 3,4`.
     #[arg(long, global = true, value_name = "X,Y")]
     pub columns: Option<crate::read::Columns>,
+    /// The GeoPackage layer to read the points from (by default the only layer, or the only
+    /// point layer).
+    #[arg(long, global = true, value_name = "NAME")]
+    pub layer: Option<String>,
+    /// The coordinate reference system of input that does not declare one (`EPSG:27700`,
+    /// `EPSG:4326`), written to GeoPackage and FlatGeobuf output; a file that declares
+    /// another is refused (sigdt does not transform coordinates).
+    #[arg(long, global = true, value_name = "EPSG:N", value_parser = parse_crs)]
+    pub crs: Option<crate::gis::Crs>,
     /// Threads for the data-parallel passes (sorting, nearest neighbours, the SIGDT test);
     /// by default every core, or RAYON_NUM_THREADS when it is set; more than the cores count
     /// as the cores. The output is the same, byte for byte, at every thread count.
     #[arg(long, global = true, value_name = "N",
           value_parser = RangedU64ValueParser::<usize>::new().range(1..=1024))]
     pub threads: Option<usize>,
+}
+
+/// `--crs` values.
+fn parse_crs(text: &str) -> Result<crate::gis::Crs, String> {
+    crate::gis::Crs::parse(text)
 }
 
 /// Default of `--max-points`: 10^8 points (1.6 GB of coordinates).

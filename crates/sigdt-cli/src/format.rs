@@ -1,4 +1,5 @@
-//! The output formats of `sigdt reconstruct`: the kernel's text formats and the SVG picture.
+//! The output formats of `sigdt reconstruct`: the kernel's text formats, the SVG picture,
+//! and GIS layers (GeoPackage, FlatGeobuf).
 
 use std::fmt;
 use std::io::{self, Write};
@@ -6,10 +7,13 @@ use std::path::Path;
 use std::str::FromStr;
 
 use sigdt::io::OutputFormat as Text;
-use sigdt::{Point, Reconstruction};
+use sigdt::{Method, Point, Reconstruction};
+
+use crate::gis::{fgb, gpkg, layers::Layers as GisLayers, Crs};
 use sigdt_lab::render::{render_svg, Layers, RenderOptions};
 
-/// An output format. Spelled `edges`, `loops`, `wkt`, `geojson`, `svg` and `png`;
+/// An output format. Spelled `edges`, `loops`, `wkt`, `geojson`, `svg`, `png`, `gpkg` and
+/// `fgb`;
 /// [`FromStr`] and [`Display`](fmt::Display) map between the two.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum OutputFormat {
@@ -19,6 +23,18 @@ pub enum OutputFormat {
     Svg,
     /// The same picture as a PNG image.
     Png,
+    /// GeoPackage layers `curves` and `left_out` ([`Layers`]).
+    GeoPackage,
+    /// FlatGeobuf: the same features in one layer.
+    FlatGeobuf,
+}
+
+/// What a result's GIS layers say beside its geometry: the method that made it and the
+/// coordinate system of its points.
+#[derive(Debug, Clone, Copy)]
+pub struct Context<'a> {
+    pub method: Method,
+    pub crs: Option<&'a Crs>,
 }
 
 impl OutputFormat {
@@ -30,6 +46,8 @@ impl OutputFormat {
         OutputFormat::Text(Text::GeoJson),
         OutputFormat::Svg,
         OutputFormat::Png,
+        OutputFormat::GeoPackage,
+        OutputFormat::FlatGeobuf,
     ];
 
     /// The lower-case name.
@@ -38,17 +56,23 @@ impl OutputFormat {
             OutputFormat::Text(text) => text.name(),
             OutputFormat::Svg => "svg",
             OutputFormat::Png => "png",
+            OutputFormat::GeoPackage => "gpkg",
+            OutputFormat::FlatGeobuf => "fgb",
         }
     }
 
     /// The format implied by the file extension (case-insensitive): the kernel's text
-    /// extensions, `.svg` and `.png`; anything else is `None`.
+    /// extensions, `.svg`, `.png`, `.gpkg` and `.fgb`; anything else is `None`.
     pub fn from_path(path: &Path) -> Option<OutputFormat> {
         let is = |ext: &str| path.extension().is_some_and(|e| e.eq_ignore_ascii_case(ext));
         if is("svg") {
             Some(OutputFormat::Svg)
         } else if is("png") {
             Some(OutputFormat::Png)
+        } else if is("gpkg") {
+            Some(OutputFormat::GeoPackage)
+        } else if is("fgb") {
+            Some(OutputFormat::FlatGeobuf)
         } else {
             Text::from_path(path).map(OutputFormat::Text)
         }
@@ -60,6 +84,7 @@ impl OutputFormat {
         w: &mut dyn Write,
         points: &[Point],
         rec: &Reconstruction,
+        context: Context<'_>,
     ) -> io::Result<()> {
         match self {
             OutputFormat::Text(text) => sigdt::io::write_reconstruction(w, text, points, rec),
@@ -68,6 +93,14 @@ impl OutputFormat {
                 let bytes =
                     crate::png::svg_to_png(&picture(points, rec)).map_err(io::Error::other)?;
                 w.write_all(&bytes)
+            }
+            OutputFormat::GeoPackage | OutputFormat::FlatGeobuf => {
+                let layers = GisLayers::new(context.method, points, rec);
+                let bytes = match self {
+                    OutputFormat::GeoPackage => gpkg::write(&layers, context.crs),
+                    _ => fgb::write(&layers, context.crs),
+                };
+                w.write_all(&bytes.map_err(io::Error::other)?)
             }
         }
     }
@@ -117,7 +150,8 @@ mod tests {
 
     fn text(format: OutputFormat, points: &[Point], rec: &Reconstruction) -> String {
         let mut out = Vec::new();
-        format.write(&mut out, points, rec).unwrap();
+        let context = Context { method: Method::SigConnect2d, crs: None };
+        format.write(&mut out, points, rec, context).unwrap();
         String::from_utf8(out).unwrap()
     }
 
@@ -135,7 +169,7 @@ mod tests {
             assert_eq!(f.to_string().parse::<OutputFormat>().unwrap(), f);
         }
         let err = "jpg".parse::<OutputFormat>().unwrap_err().to_string();
-        let names = "edges, loops, wkt, geojson, svg, png";
+        let names = "edges, loops, wkt, geojson, svg, png, gpkg, fgb";
         assert!(err.contains("'jpg'") && err.contains(names), "{err}");
         let format = |name: &str| OutputFormat::from_path(Path::new(name));
         assert_eq!(format("a.JSON"), Some(OutputFormat::Text(Text::GeoJson)));

@@ -8,6 +8,7 @@ use std::path::Path;
 use anyhow::Result;
 use sigdt::{Edge, Point};
 
+use crate::gis::Crs;
 use crate::output::is_dash;
 use crate::read::{self, Columns, Reading};
 
@@ -18,12 +19,21 @@ pub struct Input {
     max_points: usize,
     /// `--columns`: the x and y columns of a table.
     columns: Option<Columns>,
+    /// `--layer`: the layer of a GeoPackage.
+    layer: Option<String>,
+    /// `--crs`: the coordinate system of input that does not declare one.
+    crs: Option<Crs>,
 }
 
 impl Input {
     /// Input reading with at most `max_points` points, from `columns` of a table if given.
     pub fn new(max_points: usize, columns: Option<Columns>) -> Input {
-        Input { max_points, columns }
+        Input { max_points, columns, layer: None, crs: None }
+    }
+
+    /// Reading `layer` of a GeoPackage, and input in `crs` unless it says otherwise.
+    pub fn with_gis(self, layer: Option<String>, crs: Option<Crs>) -> Input {
+        Input { layer, crs, ..self }
     }
 
     /// The points of `input`, a file or `-` for standard input, in any format of
@@ -34,15 +44,33 @@ impl Input {
 
     /// [`Input::points`], and how they were read (the format; a table's columns).
     pub fn points_and_how(&self, input: &Path) -> Result<read::Points> {
-        let how = Reading { max_points: self.max_points, columns: self.columns.as_ref() };
-        if is_dash(input) {
-            read::points(io::stdin().lock(), "<stdin>", how)
+        let how = Reading {
+            max_points: self.max_points,
+            columns: self.columns.as_ref(),
+            layer: self.layer.as_deref(),
+            path: None,
+        };
+        let name = input.display().to_string();
+        let mut read = if is_dash(input) {
+            read::points(io::stdin().lock(), "<stdin>", how)?
         } else {
-            let name = input.display().to_string();
             let file = std::fs::File::open(input)
                 .map_err(|source| sigdt::Error::Io { path: name.clone(), source })?;
-            read::points(file, &name, how)
+            read::points(file, &name, Reading { path: Some(input), ..how })?
+        };
+        match (&read.crs, &self.crs) {
+            (Some(declared), Some(given))
+                if declared.epsg.is_some() && declared.epsg != given.epsg =>
+            {
+                anyhow::bail!(
+                    "{name} is in {declared}, but --crs says {given}: sigdt does not transform \
+                     coordinates (reproject the file, or drop --crs)"
+                );
+            }
+            (None, Some(given)) => read.crs = Some(given.clone()),
+            _ => {}
         }
+        Ok(read)
     }
 }
 

@@ -77,7 +77,7 @@ pub fn write_labelled(out: &Path, labelled: &Labelled, source: &Path) -> Result<
         let stem = out.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
         out.with_file_name(format!("{stem}.{ext}"))
     };
-    if out.extension().map_or(true, |e| e == "gt") {
+    if out.extension().is_none_or(|e| e == "gt") {
         bail!(
             "{}: the output needs an extension such as .xy (the ground truth goes to .gt)",
             out.display()

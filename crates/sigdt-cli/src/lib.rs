@@ -18,6 +18,7 @@ mod bench;
 mod cli;
 mod cmd;
 mod format;
+mod gis;
 mod input;
 mod labelled;
 mod messages;
@@ -74,7 +75,7 @@ pub fn read_points_bytes(
     max_points: usize,
 ) -> Result<Vec<sigdt::Point>, ReadError> {
     let columns = parse_columns(columns)?;
-    let how = read::Reading { max_points, columns: columns.as_ref() };
+    let how = read::Reading { columns: columns.as_ref(), ..read::Reading::at_most(max_points) };
     read::points(bytes, name, how).map(|read| read.points).map_err(read_error)
 }
 
@@ -112,7 +113,8 @@ fn run_command(args: impl IntoIterator<Item = OsString>) -> u8 {
         Ok(cli) => cli,
         Err(err) => return clap_exit(&err),
     };
-    let input = Input::new(cli.max_points, cli.columns.clone());
+    let input = Input::new(cli.max_points, cli.columns.clone())
+        .with_gis(cli.layer.clone(), cli.crs.clone());
     output::remove_pending_on_signals();
     // A pool of its own, not the global one: the Python package runs this in process, and
     // rayon's global pool panics when it cannot start its threads.

@@ -22,7 +22,7 @@ pub fn select(dir: &Path, categories: &[String], names: Option<&str>) -> Result<
     })?;
     let wanted = |row: &dataset::Case| {
         (categories.is_empty() || categories.contains(&row.category))
-            && names.map_or(true, |pattern| row.name.contains(pattern))
+            && names.is_none_or(|pattern| row.name.contains(pattern))
     };
     let cases: Vec<Case> =
         rows.into_iter().filter(wanted).map(|row| Case { row, graph_epsilon: None }).collect();

@@ -7,9 +7,10 @@ use anyhow::{bail, Result};
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::Args;
 use sigdt::io::OutputFormat as TextFormat;
-use sigdt::{Method, Options, Reconstruction, Vertices};
+use sigdt::{Method, Options, Point, Reconstruction, Vertices};
 
-use crate::format::OutputFormat;
+use crate::format::{Context, OutputFormat};
+use crate::gis::{local::LocalProjection, Crs};
 use crate::input::Input;
 use crate::messages::{note, UsageError};
 use crate::output::{is_dash, Output};
@@ -55,7 +56,7 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
                     kind: clap::error::ErrorKind::InvalidValue,
                     message: format!(
                         "{}: '.{}' names no output format: use .edges, .txt, .loops, .wkt, \
-                         .geojson, .json, .svg or .png, or give --format",
+                         .geojson, .json, .svg, .png, .gpkg or .fgb, or give --format",
                         out.display(),
                         ext.to_string_lossy()
                     ),
@@ -65,15 +66,37 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         },
     };
     let read = input.points_and_how(&args.input)?;
-    let (mut points, read_as) = (read.points, read.how);
+    let (mut points, read_as, crs) = (read.points, read.how, read.crs);
+    if let (OutputFormat::Text(TextFormat::GeoJson), Some(crs)) = (format, &crs) {
+        if crs.epsg != Some(4326) {
+            // RFC 7946: GeoJSON coordinates are WGS 84 longitude and latitude; readers take
+            // anything else for degrees.
+            bail!(
+                "{} is in {crs}, but GeoJSON is longitude/latitude on WGS 84 (RFC 7946) and \
+                 sigdt does not transform coordinates: write .gpkg or .fgb, which keep the \
+                 coordinate system",
+                args.input.display()
+            );
+        }
+    }
     let options = Options { method: args.method, leaf_elimination: !args.no_leaf_elimination };
+    let projection = local_plane(&points, crs.as_ref(), read.lon_lat)?;
     let start = Instant::now();
     // Edges and loops are indices: the points can go once triangulated (less peak memory).
     let indices_only = matches!(format, OutputFormat::Text(TextFormat::Edges | TextFormat::Loops));
-    let rec = match indices_only {
-        true => sigdt::reconstruct_owned(std::mem::take(&mut points), &options)?,
-        false => sigdt::reconstruct(&points, &options)?,
+    let mut rec = match (indices_only, &projection) {
+        (true, None) => sigdt::reconstruct_owned(std::mem::take(&mut points), &options)?,
+        (false, None) => sigdt::reconstruct(&points, &options)?,
+        (_, Some((plane, _))) => {
+            let projected: Vec<Point> = points.iter().map(|&p| plane.forward(p)).collect();
+            sigdt::reconstruct_owned(projected, &options)?
+        }
     };
+    if let (Some((plane, _)), Vertices::Moved(placed) | Vertices::New(placed)) =
+        (&projection, &mut rec.vertices)
+    {
+        placed.iter_mut().for_each(|p| *p = plane.inverse(*p));
+    }
     let elapsed = start.elapsed().as_secs_f64() * 1e3;
     if indices_only && matches!(rec.vertices, Vertices::New(_)) {
         // Indices into vertices the user never sees would be a silent wrong answer.
@@ -84,10 +107,37 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         );
     }
     if args.verbose {
+        let read_as = match (&crs, &projection) {
+            (_, Some((_, why))) => format!("{read_as}; {why}"),
+            (Some(crs), None) => format!("{read_as}; in {crs}"),
+            (None, None) => read_as,
+        };
         summary(&options, &rec, elapsed, &read_as);
     }
     warnings(&rec);
-    output.write(|w| format.write(w, &points, &rec))
+    let context = Context { method: args.method, crs: crs.as_ref() };
+    output.write(|w| format.write(w, &points, &rec, context))
+}
+
+/// The local plane to reconstruct longitude/latitude input in (see [`LocalProjection`]),
+/// with a line for `--verbose`: when the coordinate system is geographic or the columns are
+/// named longitude and latitude.
+fn local_plane(
+    points: &[Point],
+    crs: Option<&Crs>,
+    lon_lat: bool,
+) -> Result<Option<(LocalProjection, String)>> {
+    let reason = match crs {
+        Some(crs) if crs.is_geographic() == Some(true) => format!("{crs} is longitude/latitude"),
+        _ if lon_lat => "the columns are longitude and latitude".to_string(),
+        _ => return Ok(None),
+    };
+    let plane = LocalProjection::fit(points, &reason)?;
+    let why = format!(
+        "{reason}: reconstructed in an azimuthal equidistant plane centred on the points, \
+         written in degrees"
+    );
+    Ok(Some((plane, why)))
 }
 
 /// `--format` values, listed in the help and checked by clap.

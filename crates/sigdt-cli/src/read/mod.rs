@@ -4,7 +4,9 @@
 //!
 //! The format is chosen once, at the entry, in this order:
 //! 1. gzip magic bytes: decompressed on the fly, and the name without `.gz` decides the rest;
-//! 2. the `.npy` magic bytes: a NumPy array ([`npy`]);
+//! 2. magic bytes: a NumPy array ([`npy`]), a GeoPackage (SQLite; read in place, so only
+//!    from a file), FlatGeobuf or a Shapefile `.shp` (its `.prj` read for the coordinate
+//!    system) ([`crate::gis`]);
 //! 3. `--columns`: a table ([`table`]);
 //! 4. the extension: `.wkt`, `.geojson` or `.json`, `.csv` or `.tsv` with more than two
 //!    fields, `;` separators or quotes;
@@ -28,26 +30,44 @@ use anyhow::{bail, Context, Result};
 use sigdt::io::PointFormat;
 use sigdt::Point;
 
+use crate::gis::{fgb, gpkg, shp, Crs};
 use crate::messages::UsageError;
 
 pub use table::Columns;
 
-/// How points are to be read: the limit on their number and the columns of a table.
+/// How points are to be read: the limit on their number, the columns of a table, the
+/// layer of a GeoPackage, and the path of a file (a GeoPackage is read in place, and a
+/// Shapefile's `.prj` lies beside it).
 #[derive(Debug, Clone, Copy)]
 pub struct Reading<'a> {
     /// Reading stops with an error after this many points.
     pub max_points: usize,
     /// `--columns`: the x and y columns of a table.
     pub columns: Option<&'a Columns>,
+    /// `--layer`: the layer of a GeoPackage.
+    pub layer: Option<&'a str>,
+    /// The file read, when it is one (not standard input, not inside gzip).
+    pub path: Option<&'a Path>,
 }
 
-/// Points read from a file, and how: the format and, for a table, the columns.
+impl Reading<'_> {
+    /// At most `max_points` points, no columns, no layer, no path.
+    pub fn at_most(max_points: usize) -> Reading<'static> {
+        Reading { max_points, columns: None, layer: None, path: None }
+    }
+}
+
+/// Points read from a file, and how: the format and, for a table, the columns; and the
+/// coordinate system the file declares, if it does.
 #[derive(Debug)]
 pub struct Points {
     pub points: Vec<Point>,
     /// For `--verbose`: "WKT", "columns 'lon' and 'lat' of a table (the header row
     /// skipped)", ...
     pub how: String,
+    pub crs: Option<Crs>,
+    /// Whether a table's columns read are named longitude and latitude.
+    pub lon_lat: bool,
 }
 
 /// The points of `reader`, named `name` in errors (a path or `<stdin>`); see the module docs.
@@ -64,6 +84,8 @@ pub fn points(reader: impl Read, name: &str, how: Reading<'_>) -> Result<Points>
         if head.starts_with(gzip::MAGIC) {
             bail!("{name}: gzip inside gzip: decompress it once (gunzip), then read what remains");
         }
+        // Nothing inside gzip is read in place.
+        let how = Reading { path: None, ..how };
         let mut read = uncompressed(unzipped, name, inner, how)?;
         read.how = format!("{} (gzip)", read.how);
         return Ok(read);
@@ -74,6 +96,9 @@ pub fn points(reader: impl Read, name: &str, how: Reading<'_>) -> Result<Points>
 /// The formats of [`uncompressed`], found before reading.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Format {
+    GeoPackage,
+    FlatGeobuf,
+    Shapefile,
     Npy,
     Wkt,
     GeoJson,
@@ -93,33 +118,76 @@ fn uncompressed<R: BufRead>(
     let head = reader.fill_buf().with_context(|| format!("{shown}: cannot read"))?;
     let format = detect(head, inner);
     let max = how.max_points;
-    let done = |points: Vec<Point>, how: &str| Points { points, how: how.to_string() };
+    let done = |points: Vec<Point>, how: &str| Points {
+        points,
+        how: how.to_string(),
+        crs: None,
+        lon_lat: false,
+    };
+    let kind = match format {
+        Format::Table | Format::Kernel(PointFormat::Plain) => "a table",
+        Format::Kernel(PointFormat::Gtn) => "a .gtn file",
+        Format::Npy => "a NumPy array",
+        Format::Wkt => "WKT",
+        Format::GeoJson => "GeoJSON",
+        Format::GeoPackage => "a GeoPackage",
+        Format::FlatGeobuf => "FlatGeobuf",
+        Format::Shapefile => "a Shapefile",
+    };
+    let conflict = |message: String| -> anyhow::Error {
+        UsageError { command: "", kind: clap::error::ErrorKind::ArgumentConflict, message }.into()
+    };
+    if how.layer.is_some() && format != Format::GeoPackage {
+        return Err(conflict(format!("--layer: {shown} is {kind}, which has no layers to choose")));
+    }
     if let Some(columns) = how.columns {
-        let other = match format {
-            Format::Table | Format::Kernel(PointFormat::Plain) => None,
-            Format::Kernel(PointFormat::Gtn) => Some("a .gtn file"),
-            Format::Npy => Some("a NumPy array"),
-            Format::Wkt => Some("WKT"),
-            Format::GeoJson => Some("GeoJSON"),
-        };
-        if let Some(kind) = other {
-            return Err(UsageError {
-                command: "",
-                kind: clap::error::ErrorKind::ArgumentConflict,
-                message: format!("--columns: {shown} is {kind}, which has no columns to choose"),
-            }
-            .into());
+        if !matches!(format, Format::Table | Format::Kernel(PointFormat::Plain)) {
+            return Err(conflict(format!(
+                "--columns: {shown} is {kind}, which has no columns to choose"
+            )));
         }
         let table = table::read(reader, shown, Some(columns), max)?;
-        return Ok(Points { points: table.points, how: table.how });
+        return Ok(Points {
+            points: table.points,
+            how: table.how,
+            crs: None,
+            lon_lat: table.lon_lat,
+        });
     }
     Ok(match format {
+        Format::GeoPackage => {
+            let Some(path) = how.path else {
+                bail!(
+                    "{shown}: a GeoPackage is read in place: give its file name (not standard \
+                     input, not gzip-compressed)"
+                );
+            };
+            let read = gpkg::read(path, shown, how.layer, max)?;
+            let how = format!("layer {} of a GeoPackage", sigdt::io::quoted(&read.layer));
+            Points { points: read.points, how, crs: read.crs, lon_lat: false }
+        }
+        Format::FlatGeobuf => {
+            let read = fgb::read(reader, shown, max)?;
+            Points { points: read.points, how: "FlatGeobuf".into(), crs: read.crs, lon_lat: false }
+        }
+        Format::Shapefile => {
+            let points = shp::read(reader, shown, max)?;
+            let crs = match how.path {
+                Some(path) => shp::projection(path)?,
+                None => None,
+            };
+            let how = match &crs {
+                Some(_) => "a Shapefile (its .prj read)",
+                None => "a Shapefile (no .prj beside it: coordinate system unknown)",
+            };
+            Points { points, how: how.into(), crs, lon_lat: false }
+        }
         Format::Npy => done(npy::read(reader, shown, max)?, "a NumPy array"),
         Format::Wkt => done(wkt::read(reader, shown, max)?, "WKT"),
         Format::GeoJson => done(geojson::read(reader, shown, max)?, "GeoJSON"),
         Format::Table => {
             let table = table::read(reader, shown, None, max)?;
-            Points { points: table.points, how: table.how }
+            Points { points: table.points, how: table.how, crs: None, lon_lat: table.lon_lat }
         }
         Format::Kernel(format) => {
             let points = sigdt::io::parse_points_at_most(reader, shown, Some(format), max)?;
@@ -134,6 +202,15 @@ fn uncompressed<R: BufRead>(
 fn detect(head: &[u8], inner: &str) -> Format {
     if head.starts_with(npy::MAGIC) {
         return Format::Npy;
+    }
+    if head.starts_with(gpkg::MAGIC) {
+        return Format::GeoPackage;
+    }
+    if head.starts_with(fgb::MAGIC) {
+        return Format::FlatGeobuf;
+    }
+    if head.starts_with(shp::MAGIC) {
+        return Format::Shapefile;
     }
     let extension = Path::new(inner)
         .extension()
@@ -154,7 +231,7 @@ fn detect(head: &[u8], inner: &str) -> Format {
         return Format::Wkt;
     }
     match PointFormat::detect(Path::new(inner), first) {
-        PointFormat::Plain if table::names_y_before_x(first) => Format::Table,
+        PointFormat::Plain if table::needs_names(first) => Format::Table,
         format => Format::Kernel(format),
     }
 }
@@ -182,14 +259,12 @@ mod tests {
     use std::io::Write;
 
     fn read(bytes: &[u8], name: &str) -> Result<Vec<Point>> {
-        points(bytes, name, Reading { max_points: 100, columns: None }).map(|p| p.points)
+        points(bytes, name, Reading::at_most(100)).map(|p| p.points)
     }
 
     #[test]
     fn a_header_naming_y_before_x_is_read_by_name() {
-        let read = |text: &str| {
-            points(text.as_bytes(), "a.csv", Reading { max_points: 9, columns: None }).unwrap()
-        };
+        let read = |text: &str| points(text.as_bytes(), "a.csv", Reading::at_most(9)).unwrap();
         let latlon = read("lat,lon\n10,20\n11,21\n");
         assert_eq!(latlon.points, vec![[20.0, 10.0], [21.0, 11.0]]);
         assert_eq!(latlon.how, "columns 'lon' and 'lat' of a table (the header row skipped)");
@@ -201,7 +276,7 @@ mod tests {
         // Issue 30, G8: WKT and GeoJSON gave no points, a .gtn header became a point.
         let columns: Columns = "1,2".parse().unwrap();
         let with_columns = |bytes: &[u8], name: &str| {
-            points(bytes, name, Reading { max_points: 100, columns: Some(&columns) })
+            points(bytes, name, Reading { columns: Some(&columns), ..Reading::at_most(100) })
         };
         for (bytes, name, kind) in [
             (&b"MULTIPOINT (0 0, 1 0, 1 1)"[..], "a.wkt", "WKT"),

@@ -81,12 +81,14 @@ fn named_xy(header: &[String]) -> Option<(usize, usize)> {
 }
 
 /// Whether `first`, the first line of a file the plain reader would read in file order, is
-/// a header that names y before x (`lat,lon`, `Y X`, `northing,easting`): the table reader,
-/// which reads columns by name, must read it, or every point comes out with x and y swapped.
-pub fn names_y_before_x(first: &str) -> bool {
+/// a header that the table reader, which reads columns by name, must read: one that names
+/// y before x (`lat,lon`, `Y X`, `northing,easting`), or every point would come out with x
+/// and y swapped; or longitude and latitude, which are not plane coordinates.
+pub fn needs_names(first: &str) -> bool {
     let separator = [';', '\t', ','].into_iter().find(|&c| first.contains(c));
     split_fields(first, separator).is_ok_and(|fields| {
-        is_header(&fields, None) && named_xy(&fields).is_some_and(|(x, y)| y < x)
+        is_header(&fields, None)
+            && named_xy(&fields).is_some_and(|(x, y)| y < x || is_lon_lat(&fields[x], &fields[y]))
     })
 }
 
@@ -102,6 +104,15 @@ pub struct Table {
     pub points: Vec<Point>,
     /// "columns 'lon' and 'lat' (the header row skipped)" or "columns 2 and 3".
     pub how: String,
+    /// Whether the columns read are named longitude and latitude (`lon`, `lat`, ...).
+    pub lon_lat: bool,
+}
+
+/// Whether header names `x` and `y` are a longitude and a latitude.
+fn is_lon_lat(x: &str, y: &str) -> bool {
+    let (lon, lat) = XY_NAMES[1];
+    let is = |name: &str, names: &[&str]| names.iter().any(|n| name.trim().eq_ignore_ascii_case(n));
+    is(x, lon) && is(y, lat)
 }
 
 /// The points of the table `reader`, from `columns` or the columns found; see the module docs.
@@ -113,7 +124,7 @@ pub fn read(
 ) -> Result<Table> {
     let mut records = Records::new(reader, name, max_lines(max_points));
     let Some((first_line, first)) = records.next()? else {
-        return Ok(Table { points: Vec::new(), how: "an empty table".to_string() });
+        return Ok(Table { points: Vec::new(), how: "an empty table".to_string(), lon_lat: false });
     };
     let first = first.to_string();
     let separator = [';', '\t', ','].into_iter().find(|&c| first.contains(c));
@@ -152,7 +163,8 @@ pub fn read(
     }
     let skipped = if is_header { " (the header row skipped)" } else { "" };
     let how = format!("columns {} and {} of a table{skipped}", named(cx), named(cy));
-    Ok(Table { points, how })
+    let lon_lat = header.as_ref().is_some_and(|h| is_lon_lat(&h[cx], &h[cy]));
+    Ok(Table { points, how, lon_lat })
 }
 
 /// Whether the first row, split into `fields`, is a header, by the plain reader's rule for
@@ -487,8 +499,10 @@ mod tests {
         let gis = "id,name,Latitude,Longitude,elev_m\n1,a,60.5,5.25,10\n";
         assert_eq!(parse(gis, None).unwrap(), vec![[5.25, 60.5]]);
         assert_eq!(parse("a,b\n1,2\n", None).unwrap(), vec![[1.0, 2.0]], "two unnamed columns");
-        assert!(names_y_before_x("lat,lon") && names_y_before_x("northing easting"));
-        assert!(!names_y_before_x("x,y") && !names_y_before_x("1,2") && !names_y_before_x("a b"));
+        assert!(needs_names("lat,lon") && needs_names("northing easting"));
+        assert!(needs_names("lon,lat"), "longitude and latitude are not plane coordinates");
+        assert!(!needs_names("x,y") && !needs_names("1,2") && !needs_names("a b"));
+        assert!(!needs_names("e,n"), "easting and northing are");
     }
 
     #[test]

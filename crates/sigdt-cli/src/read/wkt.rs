@@ -257,7 +257,7 @@ impl<R: BufRead> Parser<'_, R> {
     fn geometry(&mut self) -> Result<()> {
         if self.eat("SRID")? {
             self.expect("=")?;
-            if !self.peek().is_some_and(|t| t.parse::<u32>().is_ok()) {
+            if self.peek().is_none_or(|t| t.parse::<u32>().is_err()) {
                 return Err(self.error("an SRID number"));
             }
             self.tokens.advance()?;

@@ -44,7 +44,7 @@ fn npy_arrays_and_gzip_files() {
     let values: Vec<u8> =
         [0.0f64, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0].iter().flat_map(|v| v.to_le_bytes()).collect();
     let mut header = b"{'descr': '<f8', 'fortran_order': False, 'shape': (4, 2), }".to_vec();
-    while (10 + header.len() + 1) % 64 != 0 {
+    while !(10 + header.len() + 1).is_multiple_of(64) {
         header.push(b' ');
     }
     header.push(b'\n');

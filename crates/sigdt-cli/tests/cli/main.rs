@@ -22,6 +22,7 @@ mod determinism;
 mod errors;
 mod files;
 mod formats;
+mod gis;
 mod limits;
 mod pictures;
 mod results;

@@ -1,0 +1,155 @@
+//! Coordinate reference systems as GIS files carry them: an authority code (`EPSG:27700`)
+//! and, where the file gives one, the WKT definition. sigdt does not transform coordinates
+//! between systems; it carries the system from the input to every GIS output, and tells
+//! geographic (longitude/latitude) systems apart, whose degrees are not lengths.
+
+use std::fmt;
+
+/// A coordinate reference system.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Crs {
+    /// The EPSG code, when known (`OGC:CRS84` counts as 4326: the same datum and units).
+    pub epsg: Option<u32>,
+    /// The WKT definition, when the file gave one.
+    pub wkt: Option<String>,
+}
+
+/// The WKT of EPSG:4326, written to GeoPackages (whose definition column may not be empty)
+/// when only the code is known.
+pub const WGS84_WKT: &str = r#"GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563,AUTHORITY["EPSG","7030"]],AUTHORITY["EPSG","6326"]],PRIMEM["Greenwich",0,AUTHORITY["EPSG","8901"]],UNIT["degree",0.0174532925199433,AUTHORITY["EPSG","9122"]],AXIS["Latitude",NORTH],AXIS["Longitude",EAST],AUTHORITY["EPSG","4326"]]"#;
+
+impl Crs {
+    /// The system with EPSG code `code`.
+    pub fn epsg(code: u32) -> Crs {
+        Crs { epsg: Some(code), wkt: None }
+    }
+
+    /// `--crs`: `EPSG:NNNN` (any case), `OGC:CRS84` or `CRS84`; a bare number is an EPSG
+    /// code.
+    pub fn parse(text: &str) -> Result<Crs, String> {
+        let text = text.trim();
+        let upper = text.to_ascii_uppercase();
+        if matches!(upper.as_str(), "OGC:CRS84" | "CRS84" | "URN:OGC:DEF:CRS:OGC:1.3:CRS84") {
+            return Ok(Crs::epsg(4326));
+        }
+        let code = upper
+            .strip_prefix("EPSG:")
+            .or_else(|| upper.strip_prefix("URN:OGC:DEF:CRS:EPSG::"))
+            .unwrap_or(&upper);
+        match code.parse::<u32>() {
+            Ok(code) if code > 0 => Ok(Crs::epsg(code)),
+            _ => Err(format!(
+                "{} is not a coordinate reference system sigdt knows: give EPSG:NNNN (for \
+                 example EPSG:4326 for longitude/latitude, EPSG:27700 for the British grid)",
+                sigdt::io::quoted(text)
+            )),
+        }
+    }
+
+    /// The system a WKT definition describes: its EPSG code when the definition names one
+    /// for the whole system (the root's last `AUTHORITY["EPSG","N"]` in WKT 1, `ID["EPSG",N]`
+    /// in WKT 2), and the definition itself.
+    pub fn from_wkt(wkt: &str) -> Crs {
+        let wkt = wkt.trim();
+        Crs { epsg: root_epsg(wkt), wkt: (!wkt.is_empty()).then(|| wkt.to_string()) }
+    }
+
+    /// Whether coordinates are longitude and latitude in degrees: `Some(true)` for a
+    /// geographic system (EPSG codes 4000–4999, or a WKT `GEOGCS`/`GEOGCRS`), `Some(false)`
+    /// for one known to be projected, `None` when the definition does not say.
+    pub fn is_geographic(&self) -> Option<bool> {
+        if let Some(wkt) = &self.wkt {
+            let head = wkt.trim_start().to_ascii_uppercase();
+            if head.starts_with("GEOGCS") || head.starts_with("GEOGCRS") {
+                return Some(true);
+            }
+            if head.starts_with("PROJCS") || head.starts_with("PROJCRS") {
+                return Some(false);
+            }
+        }
+        self.epsg.map(|code| (4000..5000).contains(&code))
+    }
+}
+
+impl fmt::Display for Crs {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.epsg {
+            Some(code) => write!(f, "EPSG:{code}"),
+            None => f.write_str("a coordinate system without an EPSG code"),
+        }
+    }
+}
+
+/// The EPSG code of the whole system in a WKT definition: the authority clause that closes
+/// the root (the last one at depth one), not those of its datum or units.
+fn root_epsg(wkt: &str) -> Option<u32> {
+    let bytes = wkt.as_bytes();
+    let mut depth = 0usize;
+    let mut found = None;
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'[' | b'(' => depth += 1,
+            b']' | b')' => depth = depth.saturating_sub(1),
+            b'"' => {
+                // Skip a quoted string ("" escapes a quote).
+                i += 1;
+                while i < bytes.len() && !(bytes[i] == b'"' && bytes.get(i + 1) != Some(&b'"')) {
+                    i += if bytes[i] == b'"' { 2 } else { 1 };
+                }
+            }
+            _ if depth == 1 => {
+                let rest = &wkt[i..];
+                let upper = rest.get(..10).unwrap_or(rest).to_ascii_uppercase();
+                if upper.starts_with("AUTHORITY[") || upper.starts_with("ID[") {
+                    found = authority_code(rest).or(found);
+                }
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    found
+}
+
+/// The code of `AUTHORITY["EPSG","27700"]` or `ID["EPSG",27700]` at the start of `clause`.
+fn authority_code(clause: &str) -> Option<u32> {
+    let open = clause.find('[')?;
+    let close = clause[open..].find(']')? + open;
+    let mut fields = clause[open + 1..close].split(',').map(|f| f.trim().trim_matches('"'));
+    let authority = fields.next()?;
+    let code = fields.next()?;
+    authority.eq_ignore_ascii_case("EPSG").then(|| code.parse().ok()).flatten()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_parse_in_the_spellings_people_use() {
+        for text in ["EPSG:27700", "epsg:27700", " 27700 ", "urn:ogc:def:crs:EPSG::27700"] {
+            assert_eq!(Crs::parse(text), Ok(Crs::epsg(27700)), "{text}");
+        }
+        assert_eq!(Crs::parse("OGC:CRS84"), Ok(Crs::epsg(4326)));
+        let err = Crs::parse("WGS84").unwrap_err();
+        assert!(err.starts_with("'WGS84' is not a coordinate reference system"), "{err}");
+        assert!(Crs::parse("EPSG:0").is_err() && Crs::parse("EPSG:-1").is_err());
+    }
+
+    #[test]
+    fn the_root_authority_names_the_system_not_its_datum() {
+        assert_eq!(Crs::from_wkt(WGS84_WKT).epsg, Some(4326));
+        assert_eq!(Crs::from_wkt(WGS84_WKT).is_geographic(), Some(true));
+        let projected = r#"PROJCS["OSGB36 / British National Grid",GEOGCS["OSGB36",DATUM["x",SPHEROID["Airy 1830",6377563.396,299.3249646,AUTHORITY["EPSG","7001"]]],AUTHORITY["EPSG","4277"]],PROJECTION["Transverse_Mercator"],UNIT["metre",1,AUTHORITY["EPSG","9001"]],AUTHORITY["EPSG","27700"]]"#;
+        let crs = Crs::from_wkt(projected);
+        assert_eq!((crs.epsg, crs.is_geographic()), (Some(27700), Some(false)));
+        // An ESRI .prj names no authority: the definition is kept, the code unknown.
+        let esri = r#"PROJCS["British_National_Grid",GEOGCS["GCS_OSGB_1936",DATUM["D_OSGB_1936",SPHEROID["Airy_1830",6377563.396,299.3249646]]],UNIT["Meter",1.0]]"#;
+        let crs = Crs::from_wkt(esri);
+        assert_eq!((crs.epsg, crs.is_geographic()), (None, Some(false)));
+        let wkt2 = r#"GEOGCRS["WGS 84",DATUM["World Geodetic System 1984",ELLIPSOID["WGS 84",6378137,298.257223563]],CS[ellipsoidal,2],ID["EPSG",4326]]"#;
+        assert_eq!(Crs::from_wkt(wkt2).epsg, Some(4326));
+        assert_eq!(Crs::epsg(27700).is_geographic(), Some(false));
+    }
+}

@@ -1,0 +1,101 @@
+//! A result as GIS layers: `curves`, one feature a polygon (a loop with the loops directly
+//! inside it as holes, grouped by [`Reconstruction::polygons`]) or a path (a line string),
+//! each with the run's method, status, warning and diagnosis; and `left_out`, one point a
+//! left-out input point with its input row (0-based, as every index sigdt writes) and the
+//! reason. GeoPackage and FlatGeobuf write the same layers.
+
+use sigdt::{Method, Point, Reconstruction};
+
+use super::wkb::Writer;
+
+/// One feature of the `curves` layer.
+pub struct Curve {
+    /// `polygon` or `path`.
+    pub kind: &'static str,
+    /// Its geometry as well-known binary.
+    pub wkb: Vec<u8>,
+    /// Points on it (a polygon's rings together).
+    pub vertices: usize,
+    /// The bounding box `[min x, min y, max x, max y]`.
+    pub bounds: [f64; 4],
+}
+
+/// What every curve says about the run.
+pub struct Run {
+    pub method: String,
+    pub status: &'static str,
+    pub warning: bool,
+    /// The sampling check's findings, `; `-separated; empty when there are none.
+    pub diagnosis: String,
+}
+
+/// One feature of the `left_out` layer.
+pub struct LeftOut {
+    pub point: Point,
+    /// The input index.
+    pub row: usize,
+    pub reason: &'static str,
+}
+
+/// The layers of `rec`, computed by `method` from the input `points`.
+pub struct Layers {
+    pub run: Run,
+    pub curves: Vec<Curve>,
+    pub left_out: Vec<LeftOut>,
+}
+
+impl Layers {
+    pub fn new(method: Method, points: &[Point], rec: &Reconstruction) -> Layers {
+        let vertices = rec.vertex_positions(points);
+        let ring = |l: &Vec<usize>| l.iter().map(|&i| vertices[i]).collect::<Vec<Point>>();
+        let mut curves = Vec::new();
+        for polygon in rec.polygons(vertices) {
+            let rings: Vec<Vec<Point>> = std::iter::once(polygon.shell)
+                .chain(polygon.holes.iter().copied())
+                .map(|k| ring(&rec.loops[k]))
+                .collect();
+            let mut w = Writer(Vec::new());
+            w.polygon(&rings);
+            let count = rings.iter().map(Vec::len).sum();
+            curves.push(Curve {
+                kind: "polygon",
+                wkb: w.0,
+                vertices: count,
+                bounds: bounds(&rings[0]),
+            });
+        }
+        for path in &rec.paths {
+            let line = ring(path);
+            let mut w = Writer(Vec::new());
+            w.line_string(&line);
+            curves.push(Curve {
+                kind: "path",
+                wkb: w.0,
+                vertices: line.len(),
+                bounds: bounds(&line),
+            });
+        }
+        let findings: Vec<String> = rec.diagnosis.iter().map(ToString::to_string).collect();
+        let run = Run {
+            method: method.to_string(),
+            status: rec.status.name(),
+            warning: rec.warns(),
+            diagnosis: findings.join("; "),
+        };
+        let left_out = rec
+            .left_out
+            .iter()
+            .map(|l| LeftOut { point: points[l.index], row: l.index, reason: l.reason.name() })
+            .collect();
+        Layers { run, curves, left_out }
+    }
+}
+
+/// The bounding box of `points` (not empty).
+fn bounds(points: &[Point]) -> [f64; 4] {
+    points
+        .iter()
+        .fold([f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY], |b, p| {
+            [b[0].min(p[0]), b[1].min(p[1]), b[2].max(p[0]), b[3].max(p[1])]
+        })
+}

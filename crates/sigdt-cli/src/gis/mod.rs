@@ -1,0 +1,13 @@
+//! Geographic information systems' formats and coordinate systems: GeoPackage, FlatGeobuf
+//! and Shapefile points in, GeoPackage and FlatGeobuf layers out, and the coordinate
+//! reference system carried from one to the other.
+
+pub mod crs;
+pub mod fgb;
+pub mod gpkg;
+pub mod layers;
+pub mod local;
+pub mod shp;
+pub mod wkb;
+
+pub use crs::Crs;

@@ -1,0 +1,212 @@
+//! ESRI Shapefile `.shp` (ESRI White Paper J-7855, 1998): the vertices of every record,
+//! streamed record by record, and the coordinate system from the `.prj` beside it.
+//!
+//! Read: null shapes (skipped), points, multipoints, polylines and polygons, with Z or M
+//! (their values skipped); a polygon ring's closing vertex is not a point. Every count is
+//! checked against the record's declared length before anything is allocated, and every
+//! record's length against the bytes that come, so a hostile file costs what it holds.
+
+use std::io::{self, Read};
+use std::path::Path;
+
+use anyhow::{anyhow, bail, Result};
+use sigdt::Point;
+
+use super::crs::Crs;
+
+/// The file code that opens every `.shp` (big-endian 9994).
+pub const MAGIC: &[u8] = &[0x00, 0x00, 0x27, 0x0a];
+
+/// The vertices of the Shapefile stream `reader` (`name` in messages), at most `max`.
+pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<Vec<Point>> {
+    let mut header = [0u8; 100];
+    reader
+        .read_exact(&mut header)
+        .map_err(|_| anyhow!("{name}: Shapefile: the file ends inside its 100-byte header"))?;
+    if &header[..4] != MAGIC {
+        bail!("{name}: not a Shapefile (file code {:02x?}, 9994 expected)", &header[..4]);
+    }
+    let mut points = Vec::new();
+    for number in 1.. {
+        let mut head = [0u8; 8];
+        match read_full(&mut reader, &mut head) {
+            Ok(0) => break,
+            Ok(8) => {}
+            Ok(_) => bail!("{name}: Shapefile: the file ends inside the header of record {number}"),
+            Err(e) => bail!("{name}: cannot read: {e}"),
+        }
+        // The length counts 16-bit words.
+        let words = u32::from_be_bytes(head[4..8].try_into().expect("4 bytes")) as u64;
+        let mut content = Vec::new();
+        let got = (&mut reader)
+            .take(words * 2)
+            .read_to_end(&mut content)
+            .map_err(|e| anyhow!("{name}: cannot read: {e}"))?;
+        if (got as u64) < words * 2 {
+            bail!("{name}: Shapefile: the file ends inside record {number}");
+        }
+        record(&content, &mut points, max)
+            .map_err(|why| anyhow!("{name}: Shapefile record {number}: {why}"))?;
+    }
+    Ok(points)
+}
+
+/// Reads until `buf` is full or the stream ends; how many bytes were read.
+pub fn read_full(reader: &mut impl Read, buf: &mut [u8]) -> io::Result<usize> {
+    let mut filled = 0;
+    while filled < buf.len() {
+        match reader.read(&mut buf[filled..]) {
+            Ok(0) => break,
+            Ok(n) => filled += n,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(filled)
+}
+
+/// The vertices of one record's content.
+fn record(content: &[u8], out: &mut Vec<Point>, max: usize) -> Result<(), String> {
+    let int = |at: usize| -> Result<usize, String> {
+        let b = content.get(at..at + 4).ok_or("the record is shorter than its shape")?;
+        let v = i32::from_le_bytes(b.try_into().expect("4 bytes"));
+        usize::try_from(v).map_err(|_| format!("a negative count {v}"))
+    };
+    let coordinate = |at: usize| -> Result<f64, String> {
+        let b = content.get(at..at + 8).ok_or("the record is shorter than its shape")?;
+        Ok(f64::from_le_bytes(b.try_into().expect("8 bytes")))
+    };
+    let push = |p: Point, out: &mut Vec<Point>| -> Result<(), String> {
+        if !p.iter().all(|c| c.is_finite()) {
+            return Err(format!("coordinate {} {} is not finite", p[0], p[1]));
+        }
+        if out.len() == max {
+            return Err(format!("more than {max} points (raise --max-points to read more)"));
+        }
+        out.push(p);
+        Ok(())
+    };
+    let shape = int(0)?;
+    match shape {
+        0 => Ok(()),
+        1 | 11 | 21 => push([coordinate(4)?, coordinate(12)?], out),
+        8 | 18 | 28 => {
+            let n = int(36)?;
+            check_fits(n, 16, content.len() - 40.min(content.len()))?;
+            (0..n).try_for_each(|k| push([coordinate(40 + 16 * k)?, coordinate(48 + 16 * k)?], out))
+        }
+        3 | 13 | 23 | 5 | 15 | 25 => {
+            let (parts, n) = (int(36)?, int(40)?);
+            let left = content.len().saturating_sub(44);
+            check_fits(parts, 4, left)?;
+            check_fits(n, 16, left - 4 * parts)?;
+            let at = 44 + 4 * parts;
+            let mut starts = (0..parts).map(|k| int(44 + 4 * k)).collect::<Result<Vec<_>, _>>()?;
+            starts.push(n);
+            let ring = matches!(shape, 5 | 15 | 25);
+            for pair in starts.windows(2) {
+                let (start, end) = (pair[0], pair[1]);
+                if start > end || end > n {
+                    return Err(format!("part start {start} outside the {n} points"));
+                }
+                let first = out.len();
+                for k in start..end {
+                    push([coordinate(at + 16 * k)?, coordinate(at + 16 * k + 8)?], out)?;
+                }
+                if ring && out.len() > first + 1 && out.last() == out.get(first) {
+                    out.pop();
+                }
+            }
+            Ok(())
+        }
+        31 => Err("a multipatch (3D surfaces), which holds no points of a curve".into()),
+        other => Err(format!("shape type {other} is not a Shapefile shape")),
+    }
+}
+
+/// Refuses `n` items of `size` bytes when fewer than that many bytes are `left`.
+fn check_fits(n: usize, size: usize, left: usize) -> Result<(), String> {
+    match n.checked_mul(size) {
+        Some(need) if need <= left => Ok(()),
+        _ => Err(format!("{n} items, more than the record's {left} bytes hold")),
+    }
+}
+
+/// The system of the `.prj` beside the `.shp` at `path`, if there is one.
+pub fn projection(path: &Path) -> Result<Option<Crs>> {
+    let prj = path.with_extension("prj");
+    let upper = path.with_extension("PRJ");
+    let Some(found) = [prj, upper].into_iter().find(|p| p.is_file()) else {
+        return Ok(None);
+    };
+    let mut text = String::new();
+    std::fs::File::open(&found)
+        .and_then(|f| f.take(1 << 20).read_to_string(&mut text))
+        .map_err(|e| anyhow!("{}: cannot read: {e}", found.display()))?;
+    Ok(Some(Crs::from_wkt(&text)).filter(|c| c.wkt.is_some()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn shp(records: &[Vec<u8>]) -> Vec<u8> {
+        let mut bytes = MAGIC.to_vec();
+        bytes.resize(100, 0);
+        for (k, content) in records.iter().enumerate() {
+            bytes.extend_from_slice(&(k as u32 + 1).to_be_bytes());
+            bytes.extend_from_slice(&(content.len() as u32 / 2).to_be_bytes());
+            bytes.extend_from_slice(content);
+        }
+        bytes
+    }
+
+    fn point(x: f64, y: f64) -> Vec<u8> {
+        let mut c = 1i32.to_le_bytes().to_vec();
+        c.extend_from_slice(&x.to_le_bytes());
+        c.extend_from_slice(&y.to_le_bytes());
+        c
+    }
+
+    fn polygon(ring: &[Point]) -> Vec<u8> {
+        let mut c = 5i32.to_le_bytes().to_vec();
+        c.extend_from_slice(&[0; 32]);
+        c.extend_from_slice(&1i32.to_le_bytes());
+        c.extend_from_slice(&(ring.len() as i32).to_le_bytes());
+        c.extend_from_slice(&0i32.to_le_bytes());
+        for p in ring {
+            c.extend_from_slice(&p[0].to_le_bytes());
+            c.extend_from_slice(&p[1].to_le_bytes());
+        }
+        c
+    }
+
+    #[test]
+    fn points_and_rings_read_without_the_closing_repeat() {
+        let ring = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 0.0]];
+        let bytes = shp(&[point(5.0, 6.0), vec![0, 0, 0, 0], polygon(&ring)]);
+        let points = read(&bytes[..], "t.shp", 10).unwrap();
+        assert_eq!(points, vec![[5.0, 6.0], [0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]);
+    }
+
+    #[test]
+    fn hostile_records_are_refused_naming_the_record() {
+        // A polygon claiming 2^31-1 points in a short record: refused, nothing allocated.
+        let mut c = polygon(&[[0.0, 0.0]]);
+        c[40..44].copy_from_slice(&i32::MAX.to_le_bytes());
+        let err = read(&shp(&[point(0.0, 0.0), c])[..], "t.shp", 10).unwrap_err().to_string();
+        assert!(err.starts_with("t.shp: Shapefile record 2: 2147483647 items"), "{err}");
+        // A record longer than the file.
+        let mut bytes = shp(&[point(0.0, 0.0)]);
+        bytes[104..108].copy_from_slice(&u32::MAX.to_be_bytes());
+        let err = read(&bytes[..], "t.shp", 10).unwrap_err().to_string();
+        assert_eq!(err, "t.shp: Shapefile: the file ends inside record 1");
+        let err = read(&b"not a shapefile"[..], "t.shp", 10).unwrap_err().to_string();
+        assert!(err.contains("ends inside its 100-byte header"), "{err}");
+        let err = read(&shp(&[point(f64::NAN, 0.0)])[..], "t.shp", 10).unwrap_err().to_string();
+        assert!(err.contains("record 1: coordinate NaN 0 is not finite"), "{err}");
+        let many: Vec<_> = (0..11).map(|k| point(k as f64, 0.0)).collect();
+        let err = read(&shp(&many)[..], "t.shp", 10).unwrap_err().to_string();
+        assert!(err.contains("record 11: more than 10 points"), "{err}");
+    }
+}
