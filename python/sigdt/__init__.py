@@ -17,6 +17,7 @@ from ._eval import evaluate, graph_epsilon, graph_overlap
 from ._result import Reconstruction
 from ._trace import PHASES, Trace, trace
 from .errors import InternalError, InvalidInputError, ParseError, SigdtError, SigdtWarning
+from .geopandas import reconstruct_frame
 from .plot import plot_steps
 from .shapely import from_shapely, to_shapely
 
@@ -40,6 +41,7 @@ __all__ = [
     "proximity_graph",
     "read_points",
     "reconstruct",
+    "reconstruct_frame",
     "reconstruct_many",
     "to_shapely",
     "trace",

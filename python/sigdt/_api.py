@@ -9,7 +9,13 @@ from collections.abc import Iterable
 from typing import Any
 
 from . import _core
-from ._input import LEAF_ELIMINATION, _as_points, _as_points_and_index, _check_method
+from ._input import (
+    LEAF_ELIMINATION,
+    _as_points,
+    _as_points_and_index,
+    _check_method,
+    _is_geographic,
+)
 from ._result import Coordinates, Indices, Reconstruction
 from ._types import Method
 from .errors import InvalidInputError, SigdtWarning
@@ -36,14 +42,15 @@ def _threads(n_jobs: Any) -> int | None:
     return min(n, cores) if n > 0 else max(1, cores + 1 + n)
 
 
-def _warn_about(results: list[Reconstruction], many: bool) -> None:
+def _warn_about(results: list[Reconstruction], many: bool, names: list[str] | None = None) -> None:
     # What warns is decided once, in Rust (Reconstruction::warns: the status or a finding of
     # the sampling check).
     bad = [(k, r) for k, r in enumerate(results) if r.warns]
     if not bad:
         return
     k, first = bad[0]
-    where = f"point set {k}" + (f" (and {len(bad) - 1} more)" if len(bad) > 1 else "")
+    name = names[k] if names is not None else f"point set {k}"
+    where = name + (f" (and {len(bad) - 1} more)" if len(bad) > 1 else "")
     found = [f["message"] for f in first.diagnosis]
     if first._fields["status_is_warning"]:
         found.insert(0, f"{first.status}: {first._fields['status_message']}")
@@ -71,7 +78,11 @@ def reconstruct(
         ``rec.points``; the extension works on its own copy, so the result depends only on
         the values at the call); a shapely ``MultiPoint`` or a sequence of shapely
         ``Point`` objects; or a GeoPandas ``GeoSeries`` / ``GeoDataFrame`` of points, whose
-        index is kept as ``rec.index`` so that results map back to rows.
+        index is kept as ``rec.index`` so that results map back to rows, and whose
+        coordinate reference system is kept as ``rec.crs``. A geographic system
+        (longitude/latitude) is reconstructed in a plane centred on the points
+        (azimuthal equidistant), where distances are lengths on the ground; the result's
+        coordinates stay in degrees.
     method : str, default "sig-connect2d"
         The reconstruction method (see ``sigdt.METHODS``). ``"sig-auto"`` keeps open
         curves open and nested curves separate: closed loops in ``loops``, open curves in
@@ -121,9 +132,9 @@ def reconstruct(
     [array([0, 1, 2, 3])]
     """
     _check_method(method)
-    array, index = _as_points_and_index(points)
-    fields = _core.reconstruct(array, method, bool(leaf_elimination))
-    rec = Reconstruction(array, fields, index)
+    array, index, crs = _as_points_and_index(points)
+    fields = _core.reconstruct(array, method, bool(leaf_elimination), _is_geographic(crs))
+    rec = Reconstruction(array, fields, index, crs)
     _warn_about([rec], many=False)
     return rec
 

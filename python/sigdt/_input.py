@@ -88,13 +88,19 @@ def _refuse_empty_points(geometries: np.ndarray, index: Any = None) -> None:
         )
 
 
-def _as_points_and_index(points: Any) -> tuple[np.ndarray, Any]:
-    """:func:`_as_points`, and the index of a GeoPandas input (``None`` otherwise)."""
+def _as_points_and_index(points: Any) -> tuple[np.ndarray, Any, Any]:
+    """:func:`_as_points`, and the index and coordinate reference system of a GeoPandas
+    input (``None`` otherwise)."""
     geometric = _geometry_points(points)
     if geometric is not None:
         coords, index = geometric
-        return _as_points(coords), index
-    return _as_points(points), None
+        return _as_points(coords), index, getattr(points, "crs", None)
+    return _as_points(points), None, None
+
+
+def _is_geographic(crs: Any) -> bool:
+    """Whether a GeoPandas (pyproj) coordinate reference system is longitude/latitude."""
+    return bool(getattr(crs, "is_geographic", False))
 
 
 def _as_points(points: Any) -> np.ndarray:

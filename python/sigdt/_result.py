@@ -12,6 +12,7 @@ from ._types import Finding, GeoJsonFeature, LeftOutReason, Status, VerticesKind
 
 if TYPE_CHECKING:  # pragma: no cover
     import shapely
+    from geopandas import GeoDataFrame
     from matplotlib.axes import Axes
 
     from ._core import _Reconstruction
@@ -28,7 +29,7 @@ else:
     # Named at run time too, for documentation tools that evaluate annotations (the
     # extension's result dict; shapely and matplotlib are optional, imported when used).
     _Reconstruction = dict
-    ShapelyResult = Axes = Any
+    ShapelyResult = Axes = GeoDataFrame = Any
 
 #: int64 index arrays and float64 coordinate arrays.
 Indices = npt.NDArray[np.int64]
@@ -108,13 +109,19 @@ class Reconstruction:
         For a GeoSeries or GeoDataFrame input, its index: point ``i`` is row
         ``index[i]``, so ``index[rec.loops[0]]`` are the rows of the first loop in order.
         ``None`` for any other input.
+    crs : pyproj.CRS or None
+        For a GeoSeries or GeoDataFrame input, its coordinate reference system, which
+        :meth:`to_geopandas` keeps. ``None`` for any other input.
     """
 
-    __slots__ = ("_fields", "_polygons", "index", "points")
+    __slots__ = ("_fields", "_polygons", "crs", "index", "points")
 
-    def __init__(self, points: Coordinates, fields: _Reconstruction, index: Any = None) -> None:
+    def __init__(
+        self, points: Coordinates, fields: _Reconstruction, index: Any = None, crs: Any = None
+    ) -> None:
         self.points = points
         self.index = index
+        self.crs = crs
         # The extension's dict as it is: what __eq__ compares and pickling stores.
         self._fields = fields
         self._polygons: list[tuple[int, list[int]]] | None = None
@@ -213,6 +220,19 @@ class Reconstruction:
 
         return to_shapely(self)
 
+    def to_geopandas(self) -> GeoDataFrame:
+        """The result as a GeoPandas ``GeoDataFrame`` in :attr:`crs`: one row per polygon
+        (a loop with the loops directly inside it as holes, see :attr:`polygons`) and per
+        open path, with the columns ``kind`` (``"polygon"`` or ``"path"``), ``status``,
+        ``warning``, ``diagnosis`` (the findings' messages, ``"; "``-separated) and
+        ``n_vertices``; see :func:`sigdt.geopandas.to_geopandas`.
+
+        Needs the optional dependency ``geopandas``.
+        """
+        from .geopandas import to_geopandas
+
+        return to_geopandas(self)
+
     def to_geojson(self) -> GeoJsonFeature:
         """The result as a GeoJSON ``Feature`` (a JSON-serialisable dict) with the status
         and counts as properties: what ``sigdt reconstruct --format geojson`` writes for
@@ -273,6 +293,7 @@ class Reconstruction:
         mine, theirs = self._fields, other._fields
         return (
             np.array_equal(self.points, other.points)
+            and self.crs == other.crs
             and mine.keys() == theirs.keys()
             and all(_same(mine[k], theirs[k]) for k in mine)
         )
@@ -280,4 +301,4 @@ class Reconstruction:
     __hash__ = None  # type: ignore[assignment]  # mutable arrays inside
 
     def __reduce__(self) -> tuple[Any, ...]:
-        return (Reconstruction, (self.points, self._fields, self.index))
+        return (Reconstruction, (self.points, self._fields, self.index, self.crs))

@@ -32,12 +32,8 @@ def main() -> None:
         [-2.0 + xy[:, 0] * 0.03 / np.cos(np.radians(lat0)), lat0 + xy[:, 1] * 0.03]
     )
     ids = np.arange(len(xy))
-    projected = gpd.GeoDataFrame(
-        {"id": ids}, geometry=shapely.points(metres), crs="EPSG:27700"
-    )
-    geographic = gpd.GeoDataFrame(
-        {"id": ids}, geometry=shapely.points(lonlat), crs="EPSG:4326"
-    )
+    projected = gpd.GeoDataFrame({"id": ids}, geometry=shapely.points(metres), crs="EPSG:27700")
+    geographic = gpd.GeoDataFrame({"id": ids}, geometry=shapely.points(lonlat), crs="EPSG:4326")
     OUT.mkdir(parents=True, exist_ok=True)
     projected.to_file(OUT / "sigma_27700.gpkg", layer="points", engine="pyogrio")
     projected.to_file(OUT / "sigma_27700.shp", engine="pyogrio")

@@ -43,6 +43,7 @@ def test_the_public_functions_are_the_expected_ones():
         "proximity_graph",
         "read_points",
         "reconstruct",
+        "reconstruct_frame",
         "reconstruct_many",
         "to_shapely",
         "trace",

@@ -19,6 +19,10 @@ mod cli;
 mod cmd;
 mod format;
 mod gis;
+
+/// Longitude/latitude reconstructed in a local plane: for the Python package.
+#[doc(hidden)]
+pub use gis::local::reconstruct_in_plane;
 mod input;
 mod labelled;
 mod messages;

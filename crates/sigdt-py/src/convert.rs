@@ -54,7 +54,7 @@ pub fn err(e: sigdt::Error) -> PyErr {
 
 /// Runs `f`, turning a Rust panic into an [`InternalError`] message instead of unwinding
 /// into Python.
-pub fn guarded<T>(f: impl FnOnce() -> sigdt::Result<T>) -> Result<sigdt::Result<T>, String> {
+pub fn guarded<T, E>(f: impl FnOnce() -> Result<T, E>) -> Result<Result<T, E>, String> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).map_err(|panic| {
         let what = panic
             .downcast_ref::<&str>()

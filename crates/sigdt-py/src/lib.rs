@@ -27,20 +27,53 @@ fn options(method: &str, leaf_elimination: bool) -> PyResult<Options> {
     Ok(Options { method, leaf_elimination })
 }
 
-/// `reconstruct(points, method, leaf_elimination) -> dict` (see convert::reconstruction).
+/// Why `lon_lat` input is reconstructed in a local plane, in its refusals.
+const DEGREES: &str = "the coordinate system is longitude/latitude";
+
+/// The reconstruction of `pts`, in their local plane when they are longitude and latitude
+/// (`sigdt_cli::reconstruct_in_plane`, the command line's).
+fn run(
+    pts: &[sigdt::Point],
+    options: &Options,
+    lon_lat: bool,
+) -> anyhow::Result<sigdt::Reconstruction> {
+    match lon_lat {
+        true => sigdt_cli::reconstruct_in_plane(pts, options, DEGREES),
+        false => Ok(sigdt::reconstruct(pts, options)?),
+    }
+}
+
+/// A failed [`run`] as the Python exception: the kernel's errors as [`err`] maps them, a
+/// refusal of the local plane as [`InvalidInputError`].
+fn run_err(e: anyhow::Error) -> PyErr {
+    match e.downcast::<sigdt::Error>() {
+        Ok(e) => err(e),
+        Err(e) => InvalidInputError::new_err(e.to_string()),
+    }
+}
+
+/// `reconstruct(points, method, leaf_elimination, lon_lat=False) -> dict` (see
+/// convert::reconstruction).
 #[pyfunction]
+#[pyo3(signature = (points, method, leaf_elimination, lon_lat=false))]
 fn reconstruct<'py>(
     py: Python<'py>,
     points: PyReadonlyArray2<'py, f64>,
     method: &str,
     leaf_elimination: bool,
+    lon_lat: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let options = options(method, leaf_elimination)?;
     let pts = convert::points(&points)?;
     let n = pts.len();
-    // The copy is the call's own: freed once triangulated.
-    let work = move |_: &AtomicBool| guarded(move || sigdt::reconstruct_owned(pts, &options));
-    let rec = interruptible(py, n, work)?.map_err(InternalError::new_err)?.map_err(err)?;
+    let work = move |_: &AtomicBool| {
+        guarded(move || match lon_lat {
+            true => run(&pts, &options, true),
+            // The copy is the call's own: freed once triangulated.
+            false => Ok(sigdt::reconstruct_owned(pts, &options)?),
+        })
+    };
+    let rec = interruptible(py, n, work)?.map_err(InternalError::new_err)?.map_err(run_err)?;
     convert::reconstruction(py, &rec)
 }
 
@@ -67,13 +100,14 @@ fn pool(threads: usize) -> Result<Arc<rayon::ThreadPool>, String> {
 /// that index panics inside its worker instead of being reconstructed, so the tests can
 /// check that a Rust panic in one parallel task becomes an `InternalError` naming the set.
 #[pyfunction]
-#[pyo3(signature = (point_sets, method, leaf_elimination, n_jobs=None, _panic_in_set=None))]
+#[pyo3(signature = (point_sets, method, leaf_elimination, n_jobs=None, lon_lat=false, _panic_in_set=None))]
 fn reconstruct_many<'py>(
     py: Python<'py>,
     point_sets: Vec<PyReadonlyArray2<'py, f64>>,
     method: &str,
     leaf_elimination: bool,
     n_jobs: Option<usize>,
+    lon_lat: bool,
     _panic_in_set: Option<usize>,
 ) -> PyResult<Bound<'py, PyList>> {
     let options = options(method, leaf_elimination)?;
@@ -87,7 +121,7 @@ fn reconstruct_many<'py>(
         .collect::<PyResult<Vec<_>>>()?;
     let total: usize = sets.iter().map(Vec::len).sum();
     let work = move |cancel: &AtomicBool| {
-        let run = || -> Vec<Result<sigdt::Result<sigdt::Reconstruction>, String>> {
+        let all = || -> Vec<Result<anyhow::Result<sigdt::Reconstruction>, String>> {
             sets.par_iter()
                 .enumerate()
                 .map(|(k, pts)| {
@@ -98,14 +132,14 @@ fn reconstruct_many<'py>(
                         if _panic_in_set == Some(k) {
                             panic!("test hook: panic in point set {k}");
                         }
-                        sigdt::reconstruct(pts, &options)
+                        run(pts, &options, lon_lat)
                     })
                 })
                 .collect()
         };
         match n_jobs {
-            None => Ok(run()),
-            Some(threads) => pool(threads).map(|pool| pool.install(run)),
+            None => Ok(all()),
+            Some(threads) => pool(threads).map(|pool| pool.install(all)),
         }
     };
     let results =
@@ -115,7 +149,7 @@ fn reconstruct_many<'py>(
         let rec = result
             .map_err(|msg| InternalError::new_err(format!("point set {k}: {msg}")))?
             .map_err(|e| {
-                let py_err = err(e);
+                let py_err = run_err(e);
                 let message = format!("point set {k}: {}", py_err.value(py));
                 match () {
                     _ if py_err.is_instance_of::<ParseError>(py) => ParseError::new_err(message),

@@ -7,10 +7,10 @@ use anyhow::{bail, Result};
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::Args;
 use sigdt::io::OutputFormat as TextFormat;
-use sigdt::{Method, Options, Point, Reconstruction, Vertices};
+use sigdt::{Method, Options, Reconstruction, Vertices};
 
 use crate::format::{Context, OutputFormat};
-use crate::gis::{local::LocalProjection, Crs};
+use crate::gis::{local::reconstruct_in_plane, Crs};
 use crate::input::Input;
 use crate::messages::{note, UsageError};
 use crate::output::{is_dash, Output};
@@ -80,23 +80,15 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         }
     }
     let options = Options { method: args.method, leaf_elimination: !args.no_leaf_elimination };
-    let projection = local_plane(&points, crs.as_ref(), read.lon_lat)?;
+    let degrees = why_degrees(crs.as_ref(), read.lon_lat);
     let start = Instant::now();
     // Edges and loops are indices: the points can go once triangulated (less peak memory).
     let indices_only = matches!(format, OutputFormat::Text(TextFormat::Edges | TextFormat::Loops));
-    let mut rec = match (indices_only, &projection) {
+    let rec = match (indices_only, &degrees) {
         (true, None) => sigdt::reconstruct_owned(std::mem::take(&mut points), &options)?,
         (false, None) => sigdt::reconstruct(&points, &options)?,
-        (_, Some((plane, _))) => {
-            let projected: Vec<Point> = points.iter().map(|&p| plane.forward(p)).collect();
-            sigdt::reconstruct_owned(projected, &options)?
-        }
+        (_, Some(why)) => reconstruct_in_plane(&points, &options, why)?,
     };
-    if let (Some((plane, _)), Vertices::Moved(placed) | Vertices::New(placed)) =
-        (&projection, &mut rec.vertices)
-    {
-        placed.iter_mut().for_each(|p| *p = plane.inverse(*p));
-    }
     let elapsed = start.elapsed().as_secs_f64() * 1e3;
     if indices_only && matches!(rec.vertices, Vertices::New(_)) {
         // Indices into vertices the user never sees would be a silent wrong answer.
@@ -107,8 +99,11 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         );
     }
     if args.verbose {
-        let read_as = match (&crs, &projection) {
-            (_, Some((_, why))) => format!("{read_as}; {why}"),
+        let read_as = match (&crs, &degrees) {
+            (_, Some(why)) => format!(
+                "{read_as}; {why}: reconstructed in an azimuthal equidistant plane centred on \
+                 the points, written in degrees"
+            ),
             (Some(crs), None) => format!("{read_as}; in {crs}"),
             (None, None) => read_as,
         };
@@ -119,25 +114,17 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
     output.write(|w| format.write(w, &points, &rec, context))
 }
 
-/// The local plane to reconstruct longitude/latitude input in (see [`LocalProjection`]),
-/// with a line for `--verbose`: when the coordinate system is geographic or the columns are
-/// named longitude and latitude.
-fn local_plane(
-    points: &[Point],
-    crs: Option<&Crs>,
-    lon_lat: bool,
-) -> Result<Option<(LocalProjection, String)>> {
-    let reason = match crs {
-        Some(crs) if crs.is_geographic() == Some(true) => format!("{crs} is longitude/latitude"),
-        _ if lon_lat => "the columns are longitude and latitude".to_string(),
-        _ => return Ok(None),
-    };
-    let plane = LocalProjection::fit(points, &reason)?;
-    let why = format!(
-        "{reason}: reconstructed in an azimuthal equidistant plane centred on the points, \
-         written in degrees"
-    );
-    Ok(Some((plane, why)))
+/// Why the points are longitude and latitude in degrees, if they are: the coordinate
+/// system is geographic, or the columns are named so. They are then reconstructed in a
+/// local plane ([`reconstruct_in_plane`]).
+fn why_degrees(crs: Option<&Crs>, lon_lat: bool) -> Option<String> {
+    match crs {
+        Some(crs) if crs.is_geographic() == Some(true) => {
+            Some(format!("{crs} is longitude/latitude"))
+        }
+        _ if lon_lat => Some("the columns are longitude and latitude".to_string()),
+        _ => None,
+    }
 }
 
 /// `--format` values, listed in the help and checked by clap.

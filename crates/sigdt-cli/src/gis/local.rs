@@ -10,7 +10,7 @@
 //! itself are projected back.
 
 use anyhow::{bail, Result};
-use sigdt::Point;
+use sigdt::{Options, Point, Reconstruction, Vertices};
 
 /// The sphere's radius: the mean Earth radius R₁ of IUGG 1980, in metres.
 const RADIUS: f64 = 6_371_008.8;
@@ -94,6 +94,23 @@ impl LocalProjection {
         let lon = (lon + 180.0).rem_euclid(360.0) - 180.0;
         [lon, lat.to_degrees()]
     }
+}
+
+/// Reconstructs the longitude/latitude `points` in their local plane (refused as
+/// [`LocalProjection::fit`] refuses, `what` saying why they are degrees); vertices a method
+/// places itself come back in degrees. The indices refer to `points`, as always.
+pub fn reconstruct_in_plane(
+    points: &[Point],
+    options: &Options,
+    what: &str,
+) -> Result<Reconstruction> {
+    let plane = LocalProjection::fit(points, what)?;
+    let projected: Vec<Point> = points.iter().map(|&p| plane.forward(p)).collect();
+    let mut rec = sigdt::reconstruct_owned(projected, options)?;
+    if let Vertices::Moved(placed) | Vertices::New(placed) = &mut rec.vertices {
+        placed.iter_mut().for_each(|p| *p = plane.inverse(*p));
+    }
+    Ok(rec)
 }
 
 #[cfg(test)]

@@ -1,0 +1,154 @@
+"""The GIS path (issue 31): GeoPandas in and out with the coordinate reference system
+kept, longitude/latitude reconstructed in a local plane, one outline per group, and the
+CLI's GeoPackage and FlatGeobuf layers read back by GeoPandas (pyogrio, GDAL).
+
+The files of ``data/gis/`` were written by GeoPandas/pyogrio
+(``python/tests/make_gis_fixtures.py``)."""
+
+from __future__ import annotations
+
+import subprocess
+import warnings
+from pathlib import Path
+
+import geopandas as gpd
+import numpy as np
+import pandas as pd
+import pytest
+import shapely
+import sigdt
+
+ROOT = Path(__file__).resolve().parents[2]
+GIS = ROOT / "data" / "gis"
+R = 6_371_008.8
+
+
+def test_a_geodataframe_keeps_its_crs_through_to_geopandas() -> None:
+    points = gpd.read_file(GIS / "sigma_27700.gpkg")
+    rec = sigdt.reconstruct(points)
+    assert rec.crs == points.crs and rec.status == "polygon"
+    frame = rec.to_geopandas()
+    assert frame.crs.to_epsg() == 27700
+    assert frame[["kind", "status", "warning", "n_vertices"]].to_dict("records") == [
+        {"kind": "polygon", "status": "polygon", "warning": False, "n_vertices": 245}
+    ]
+    assert frame.geometry.iloc[0].is_valid
+    # The same polygon as the plain coordinates give.
+    plain = sigdt.reconstruct(points.get_coordinates().to_numpy())
+    assert np.array_equal(plain.edges, rec.edges)
+
+
+def _island(lat0: float) -> np.ndarray:
+    """The island data/real/gshhs_arch_aland_k1.xy, 5 km wide, at latitude ``lat0`` as
+    longitude/latitude (each point's own scale of longitude)."""
+    xy = np.loadtxt(ROOT / "data" / "real" / "gshhs_arch_aland_k1.xy")
+    xy = (xy - xy.min(axis=0)) / np.ptp(xy, axis=0).max() * 5000.0
+    lat = lat0 + np.degrees(xy[:, 1] / R)
+    lon = 10.0 + np.degrees(xy[:, 0] / (R * np.cos(np.radians(lat))))
+    return np.c_[lon, lat]
+
+
+def test_longitude_latitude_give_the_same_edges_at_0_and_60_north() -> None:
+    results = []
+    for lat0 in (0.0, 60.0):
+        points = gpd.GeoSeries(shapely.points(_island(lat0)), crs="EPSG:4326")
+        results.append(sigdt.reconstruct(points))
+    assert np.array_equal(results[0].edges, results[1].edges)
+    # As plane coordinates, a degree of longitude at 60° N counts twice: other edges.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sigdt.SigdtWarning)
+        planar = sigdt.reconstruct(_island(60.0))
+    assert not np.array_equal(planar.edges, results[1].edges)
+
+
+def test_degrees_that_are_not_degrees_are_refused() -> None:
+    points = gpd.read_file(GIS / "sigma_27700.gpkg").set_crs("EPSG:4326", allow_override=True)
+    with pytest.raises(sigdt.InvalidInputError, match="is not a longitude and a latitude"):
+        sigdt.reconstruct(points)
+    frame = points.assign(g=["x"] * len(points))
+    with pytest.raises(sigdt.InvalidInputError, match="^group 'x': the coordinate system is"):
+        sigdt.reconstruct_frame(frame, by="g", progress=False)
+
+
+def test_reconstruct_frame_gives_one_row_per_group() -> None:
+    points = gpd.read_file(GIS / "sigma_4326.gpkg")
+    shifted = points.assign(geometry=points.geometry.translate(0.2, 0.0))
+    both = pd.concat([points.assign(island="b"), shifted.assign(island="a")], ignore_index=True)
+    frame = sigdt.reconstruct_frame(both, by="island", progress=False)
+    assert list(frame.index) == ["a", "b"] and frame.index.name == "island"
+    assert frame.crs.to_epsg() == 4326
+    assert list(frame.columns) == [
+        "status",
+        "warning",
+        "diagnosis",
+        "n_points",
+        "n_left_out",
+        "geometry",
+    ]
+    assert frame["status"].tolist() == ["polygon", "polygon"]
+    assert frame["n_points"].tolist() == [245, 245]
+    # Group b is the file's points: the same polygon as reconstructing them alone.
+    alone = sigdt.reconstruct(points).to_shapely()
+    assert frame.geometry.loc["b"].equals(alone)
+    whole = sigdt.reconstruct_frame(points, progress=False)
+    assert len(whole) == 1 and whole.geometry.iloc[0].equals(alone)
+
+
+def test_reconstruct_frame_refuses_what_is_not_a_frame_and_warns_once() -> None:
+    with pytest.raises(TypeError, match="GeoDataFrame or GeoSeries"):
+        sigdt.reconstruct_frame(np.zeros((4, 2)))
+    # Groups of two points are too few for a curve: one warning names the first.
+    few = gpd.GeoDataFrame(
+        {"g": [1, 1, 2, 2, 2, 2, 3, 3]},
+        geometry=shapely.points([[0, 0], [1, 0], [0, 0], [1, 0], [1, 1], [0, 1], [5, 5], [6, 5]]),
+    )
+    with pytest.warns(sigdt.SigdtWarning, match=r"group 1 \(and 1 more\)") as caught:
+        frame = sigdt.reconstruct_frame(few, by="g", progress=False)
+    assert frame["status"].tolist() == ["too-few-points", "polygon", "too-few-points"]
+    assert frame["warning"].tolist() == [True, False, True]
+    assert len(caught) == 1
+
+
+@pytest.mark.parametrize(("given", "epsg"), [("sigma_27700.shp", 27700), ("sigma_4326.gpkg", 4326)])
+def test_cli_geopackage_layers_read_back_with_their_crs(
+    cli: Path, tmp_path: Path, given: str, epsg: int
+) -> None:
+    out = tmp_path / "result.gpkg"
+    subprocess.run([str(cli), "reconstruct", str(GIS / given), "-o", str(out)], check=True)
+    curves = gpd.read_file(out, layer="curves")
+    assert curves.crs.to_epsg() == epsg
+    assert curves[["kind", "method", "status", "warning", "vertices"]].to_dict("records") == [
+        {
+            "kind": "polygon",
+            "method": "sig-connect2d",
+            "status": "polygon",
+            "warning": False,
+            "vertices": 245,
+        }
+    ]
+    points = gpd.read_file(GIS / given)
+    assert curves.geometry.iloc[0].equals(sigdt.reconstruct(points).to_shapely())
+    left_out = gpd.read_file(out, layer="left_out")
+    assert len(left_out) == 0 and left_out.crs.to_epsg() == epsg
+
+
+def test_cli_flatgeobuf_with_outliers_carries_left_out_points(cli: Path, tmp_path: Path) -> None:
+    # The glyph with three far outliers: sig-auto leaves them out, with their rows.
+    points = gpd.read_file(GIS / "sigma_27700.gpkg").get_coordinates().to_numpy()
+    outliers = np.array([[380_000.0, 280_000.0], [420_000.0, 320_000.0], [380_000.0, 320_000.0]])
+    frame = gpd.GeoDataFrame(geometry=shapely.points(np.r_[points, outliers]), crs=27700)
+    given = tmp_path / "with_outliers.fgb"
+    frame.to_file(given, engine="pyogrio", SPATIAL_INDEX="NO")
+    out = tmp_path / "result.fgb"
+    subprocess.run(
+        [str(cli), "reconstruct", str(given), "--method", "sig-auto", "-o", str(out)],
+        check=True,
+        capture_output=True,
+    )
+    layer = gpd.read_file(out)
+    assert layer.crs.to_epsg() == 27700
+    curves = layer[layer["kind"] != "left-out"]
+    left = layer[layer["kind"] == "left-out"]
+    assert curves["kind"].tolist() == ["polygon"] and curves["method"].iloc[0] == "sig-auto"
+    assert sorted(left["row"].astype(int)) == [245, 246, 247]
+    assert set(left["reason"]) == {"outlier"}
