@@ -11,7 +11,13 @@ curve), placed in three coordinate systems:
   GeoPackage, and CSV with the columns in ``lat,lon`` order.
 - ``two_layers.gpkg``: the projected points beside a polygon layer, to choose with
   ``--layer``.
+- ``islands_4326.gpkg``: four archipelagos of ``data/real`` (GSHHS shorelines, smoothed
+  and sampled: ``gshhs_arch_*_smooth``), each point with its ``archipelago``, put back in
+  longitude/latitude from the kilometres of ``data/real`` around the centre of the box
+  each was taken from (``cases.jsonl``): approximately where they lie.
 """
+
+import json
 
 from pathlib import Path
 
@@ -50,6 +56,31 @@ def main() -> None:
     two.unlink(missing_ok=True)
     projected.to_file(two, layer="points", engine="pyogrio")
     hull.to_file(two, layer="hull", engine="pyogrio", mode="a")
+    islands().to_file(OUT / "islands_4326.gpkg", layer="points", engine="pyogrio")
+
+
+ARCHIPELAGOS = ["aland", "dalmatia", "hebrides", "lofoten"]
+
+
+def islands() -> gpd.GeoDataFrame:
+    real = ROOT / "data" / "real"
+    boxes = {}
+    for line in (real / "cases.jsonl").read_text().splitlines():
+        case = json.loads(line)
+        if "box" in case:
+            boxes[case["name"]] = case["box"]
+    names, coords = [], []
+    for name in ARCHIPELAGOS:
+        km = np.loadtxt(real / f"gshhs_arch_{name}_smooth.xy")
+        lon0, lon1, lat0, lat1 = boxes[f"gshhs_arch_{name}_k1"]
+        lonc, latc = (lon0 + lon1) / 2, (lat0 + lat1) / 2
+        lat = latc + km[:, 1] / 111.32
+        lon = lonc + km[:, 0] / (111.32 * np.cos(np.radians(latc)))
+        names += [name] * len(km)
+        coords.append(np.c_[lon, lat])
+    return gpd.GeoDataFrame(
+        {"archipelago": names}, geometry=shapely.points(np.concatenate(coords)), crs=4326
+    )
 
 
 if __name__ == "__main__":
