@@ -99,10 +99,12 @@ fn root_epsg(wkt: &str) -> Option<u32> {
                 }
             }
             _ if depth == 1 => {
-                let rest = &wkt[i..];
-                let upper = rest.get(..10).unwrap_or(rest).to_ascii_uppercase();
-                if upper.starts_with("AUTHORITY[") || upper.starts_with("ID[") {
-                    found = authority_code(rest).or(found);
+                let rest = &bytes[i..];
+                let starts =
+                    |p: &[u8]| rest.get(..p.len()).is_some_and(|r| r.eq_ignore_ascii_case(p));
+                if starts(b"AUTHORITY[") || starts(b"ID[") {
+                    // `i` is at an ASCII letter: a character boundary.
+                    found = authority_code(&wkt[i..]).or(found);
                 }
             }
             _ => {}
@@ -151,5 +153,17 @@ mod tests {
         let wkt2 = r#"GEOGCRS["WGS 84",DATUM["World Geodetic System 1984",ELLIPSOID["WGS 84",6378137,298.257223563]],CS[ellipsoidal,2],ID["EPSG",4326]]"#;
         assert_eq!(Crs::from_wkt(wkt2).epsg, Some(4326));
         assert_eq!(Crs::epsg(27700).is_geographic(), Some(false));
+    }
+
+    #[test]
+    fn any_text_is_a_definition_without_a_code() {
+        // Fuzz finding 15: a FlatGeobuf header's WKT with a multi-byte character at depth one
+        // was sliced inside it.
+        let odd = "   ]   [   \u{500}  ))) [ \u{500}AUTHORITY[\"EPSG\",\"1\"]";
+        assert_eq!(Crs::from_wkt(odd).epsg, Some(1), "the clause at depth one counts");
+        assert_eq!(Crs::from_wkt("X[\u{500}ID[\"EPSG\",7]]").epsg, Some(7));
+        for text in ["", "[", "]]]", "\"", "X[\"a\"\"b\",AUTHORITY[\"EPSG\"]]"] {
+            assert_eq!(Crs::from_wkt(text).epsg, None, "{text:?}");
+        }
     }
 }
