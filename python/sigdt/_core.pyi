@@ -24,6 +24,7 @@ _Reconstruction = TypedDict(
         "path_offsets": npt.NDArray[np.int64],
         "status": str,
         "status_message": str,
+        "method": str,  # absent from results pickled before it was recorded
         "status_warns": bool,
         "status_is_warning": bool,
         "diagnosis": list[_Finding],

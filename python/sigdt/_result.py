@@ -8,7 +8,7 @@ import numpy as np
 import numpy.typing as npt
 
 from . import _core
-from ._types import Finding, GeoJsonFeature, LeftOutReason, Status, VerticesKind
+from ._types import Finding, GeoJsonFeature, LeftOutReason, Method, Status, VerticesKind
 
 if TYPE_CHECKING:  # pragma: no cover
     import shapely
@@ -105,6 +105,8 @@ class Reconstruction:
         ``(d, 2)`` int64 rows ``[duplicate, representative]``; duplicates get no edges.
     stats : dict
         Per-stage counts of the run.
+    method : str
+        The method that made the result.
     index : pandas.Index or None
         For a GeoSeries or GeoDataFrame input, its index: point ``i`` is row
         ``index[i]``, so ``index[rec.loops[0]]`` are the rows of the first loop in order.
@@ -176,6 +178,12 @@ class Reconstruction:
         return self._fields["stats"]
 
     @property
+    def method(self) -> Method | None:
+        """The method that made the result (``None`` for a result pickled before sigdt
+        recorded it)."""
+        return cast("Method | None", self._fields.get("method"))
+
+    @property
     def is_manifold(self) -> bool:
         """True when the loops pass through every distinct point."""
         return self.status in ("polygon", "polygons")
@@ -223,7 +231,7 @@ class Reconstruction:
     def to_geopandas(self) -> GeoDataFrame:
         """The result as a GeoPandas ``GeoDataFrame`` in :attr:`crs`: one row per polygon
         (a loop with the loops directly inside it as holes, see :attr:`polygons`) and per
-        open path, with the columns ``kind`` (``"polygon"`` or ``"path"``), ``status``,
+        open path, with the columns ``kind`` (``"polygon"`` or ``"path"``), ``method``, ``status``,
         ``warning``, ``diagnosis`` (the findings' messages, ``"; "``-separated) and
         ``n_vertices``; see :func:`sigdt.geopandas.to_geopandas`.
 
@@ -240,7 +248,7 @@ class Reconstruction:
 
         >>> import sigdt
         >>> sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]]).to_geojson()["properties"]
-        {'status': 'polygon', 'points': 4, 'edges': 4, 'loops': 1, 'paths': 0, 'duplicates': 0, 'warning': False}
+        {'status': 'polygon', 'status_message': 'one closed polygon through every point not left out', 'method': 'sig-connect2d', 'points': 4, 'edges': 4, 'loops': 1, 'paths': 0, 'duplicates': 0, 'warning': False}
         """
         from .shapely import to_geojson
 

@@ -30,7 +30,7 @@ else:
 __all__ = ["reconstruct_frame", "to_geopandas"]
 
 #: The columns of :func:`to_geopandas`, geometry aside.
-CURVE_COLUMNS = ["kind", "status", "warning", "diagnosis", "n_vertices"]
+CURVE_COLUMNS = ["kind", "method", "status", "warning", "diagnosis", "n_vertices"]
 #: The columns of :func:`reconstruct_frame`, geometry and group keys aside.
 GROUP_COLUMNS = ["status", "warning", "diagnosis", "n_points", "n_left_out"]
 
@@ -44,7 +44,7 @@ def to_geopandas(rec: Reconstruction) -> GeoDataFrame:
     loops directly inside it as holes, :attr:`Reconstruction.polygons`) and one per open
     path (a ``LineString``).
 
-    Columns: ``kind`` (``"polygon"`` or ``"path"``), ``status``, ``warning`` (whether the
+    Columns: ``kind`` (``"polygon"`` or ``"path"``), ``method``, ``status``, ``warning`` (whether the
     result may not be the points' curves), ``diagnosis`` (the sampling check's findings,
     ``"; "``-separated, empty when there are none), ``n_vertices`` and ``geometry``.
 
@@ -75,6 +75,7 @@ def to_geopandas(rec: Reconstruction) -> GeoDataFrame:
     n = len(geometries)
     columns = {
         "kind": kinds,
+        "method": [rec.method] * n,
         "status": [rec.status] * n,
         "warning": [rec.warns] * n,
         "diagnosis": [_diagnosis(rec)] * n,

@@ -18,7 +18,6 @@ curve), placed in three coordinate systems:
 """
 
 import json
-
 from pathlib import Path
 
 import geopandas as gpd

@@ -6,7 +6,7 @@ use std::io::{self, Write};
 use std::path::Path;
 use std::str::FromStr;
 
-use sigdt::io::OutputFormat as Text;
+use sigdt::io::{OutputFormat as Text, WriteOptions};
 use sigdt::{Method, Point, Reconstruction};
 
 use crate::gis::{fgb, gpkg, layers::Layers as GisLayers, Crs};
@@ -87,7 +87,10 @@ impl OutputFormat {
         context: Context<'_>,
     ) -> io::Result<()> {
         match self {
-            OutputFormat::Text(text) => sigdt::io::write_reconstruction(w, text, points, rec),
+            OutputFormat::Text(text) => {
+                let options = WriteOptions { method: Some(context.method) };
+                sigdt::io::write_reconstruction_with(w, text, points, rec, &options)
+            }
             OutputFormat::Svg => w.write_all(picture(points, rec).as_bytes()),
             OutputFormat::Png => {
                 let bytes =

@@ -7,7 +7,8 @@ use pyo3::exceptions::{PyKeyError, PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use sigdt::{
-    Edge, Finding, FindingKind, LeftOut, LeftOutReason, Point, Reconstruction, Status, Vertices,
+    Edge, Finding, FindingKind, LeftOut, LeftOutReason, Method, Point, Reconstruction, Status,
+    Vertices,
 };
 
 // The exception classes are Python's (`python/sigdt/errors.py`), so that they can derive
@@ -128,7 +129,11 @@ pub fn chains_from(
 /// (`"input"`, `"moved"` or `"new"`) with `positions` (the `(k, 2)` float64 coordinates the
 /// edges index, or `None` for the input points), `duplicates` (int64 array) and `stats` (a
 /// dict of counts).
-pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bound<'py, PyDict>> {
+pub fn reconstruction<'py>(
+    py: Python<'py>,
+    rec: &Reconstruction,
+    method: Method,
+) -> PyResult<Bound<'py, PyDict>> {
     let (loop_vertices, loop_offsets) = chains(py, &rec.loops);
     let (path_vertices, path_offsets) = chains(py, &rec.paths);
     let left_out: Vec<usize> = rec.left_out.iter().map(|l| l.index).collect();
@@ -168,6 +173,7 @@ pub fn reconstruction<'py>(py: Python<'py>, rec: &Reconstruction) -> PyResult<Bo
     dict.set_item("path_offsets", path_offsets)?;
     dict.set_item("status", rec.status.name())?;
     dict.set_item("status_message", rec.status.to_string())?;
+    dict.set_item("method", method.name())?;
     dict.set_item("status_warns", rec.warns())?;
     dict.set_item("status_is_warning", rec.status.is_warning())?;
     let diagnosis = PyList::empty(py);

@@ -64,6 +64,7 @@ fn reconstruct<'py>(
     lon_lat: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let options = options(method, leaf_elimination)?;
+    let method = options.method;
     let pts = convert::points(&points)?;
     let n = pts.len();
     let work = move |_: &AtomicBool| {
@@ -74,7 +75,7 @@ fn reconstruct<'py>(
         })
     };
     let rec = interruptible(py, n, work)?.map_err(InternalError::new_err)?.map_err(run_err)?;
-    convert::reconstruction(py, &rec)
+    convert::reconstruction(py, &rec, method)
 }
 
 /// The thread pool of `threads` threads, built once and kept for later calls.
@@ -111,6 +112,7 @@ fn reconstruct_many<'py>(
     _panic_in_set: Option<usize>,
 ) -> PyResult<Bound<'py, PyList>> {
     let options = options(method, leaf_elimination)?;
+    let method = options.method;
     let sets = point_sets
         .iter()
         .enumerate()
@@ -159,7 +161,7 @@ fn reconstruct_many<'py>(
                     _ => pyo3::exceptions::PyValueError::new_err(message),
                 }
             })?;
-        list.append(convert::reconstruction(py, &rec)?)?;
+        list.append(convert::reconstruction(py, &rec, method)?)?;
     }
     Ok(list)
 }
@@ -216,9 +218,15 @@ fn write_reconstruction(
     let format: sigdt::io::OutputFormat = format.parse().map_err(err)?;
     let pts = convert::points(&points)?;
     let rec = convert::reconstruction_from(fields, pts.len())?;
+    // Results pickled before the method was recorded have none.
+    let method = match fields.get_item("method")? {
+        Some(name) => Some(name.extract::<String>()?.parse::<Method>().map_err(err)?),
+        None => None,
+    };
+    let options = sigdt::io::WriteOptions { method };
     let write = || {
         let mut out = Vec::new();
-        sigdt::io::write_reconstruction(&mut out, format, &pts, &rec).map(|()| out)
+        sigdt::io::write_reconstruction_with(&mut out, format, &pts, &rec, &options).map(|()| out)
     };
     let out = py
         .detach(|| guarded(|| Ok(write())))

@@ -89,6 +89,9 @@ fn geojson_output_is_longitude_and_latitude_only() {
         .error(&["is in EPSG:27700, but GeoJSON is longitude/latitude on WGS 84 (RFC 7946)"]);
     let run = sigdt(&["reconstruct", arg(&gis("sigma_4326.gpkg")), "--format", "geojson"]);
     assert!(run.ok().stdout.starts_with(r#"{"type": "Feature", "geometry": {"type": "Polygon""#));
+    // The properties say which method made the result and what its status means.
+    let method = r#""status": "polygon", "status_message": "one closed polygon through every point not left out", "method": "sig-connect2d", "points": 245"#;
+    assert!(run.stdout.contains(method), "{run}");
 }
 
 /// The island `data/real/gshhs_arch_aland_k1.xy` as a 5 km wide group in metres, placed

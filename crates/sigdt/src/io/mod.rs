@@ -12,4 +12,6 @@ pub use read::{
     quoted, read_edges, read_edges_of, read_points, read_points_at_most, too_many_lines,
     wkt_geometry, PointFormat, MAX_LINE, WKT_GEOMETRIES,
 };
-pub use write::{write_edges, write_reconstruction, OutputFormat};
+pub use write::{
+    write_edges, write_reconstruction, write_reconstruction_with, OutputFormat, WriteOptions,
+};

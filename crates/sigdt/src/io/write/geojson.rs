@@ -1,5 +1,5 @@
 //! GeoJSON: one `Feature` whose geometry holds the loops and paths and whose properties give
-//! the status and counts (`points` counts the input; `vertices`, written only when the
+//! the status (its name and what it means), the method when the caller names it, and counts (`points` counts the input; `vertices`, written only when the
 //! method moved the points or placed its own, counts the positions the geometry uses), the
 //! points left out with their reasons (when there are any), whether front ends warn, and
 //! the sampling check's findings (when there are any).
@@ -49,11 +49,17 @@ pub(super) fn geojson(
     n: usize,
     vertices: &[Point],
     rec: &Reconstruction,
+    method: Option<crate::Method>,
 ) -> io::Result<()> {
     out.extend_from_slice(br#"{"type": "Feature", "geometry": "#);
     geometry::<GeoJson>(out, vertices, rec)?;
     let (m, d, status) = (rec.edges.len(), rec.duplicates.len(), rec.status.name());
-    write!(out, r#", "properties": {{"status": "{status}", "points": {n}, "#)?;
+    let message = json_text(&rec.status.to_string());
+    write!(out, r#", "properties": {{"status": "{status}", "status_message": "{message}", "#)?;
+    if let Some(method) = method {
+        write!(out, r#""method": "{method}", "#)?;
+    }
+    write!(out, r#""points": {n}, "#)?;
     if !matches!(rec.vertices, Vertices::Input) {
         write!(out, r#""vertices": {}, "#, vertices.len())?;
     }
@@ -79,7 +85,7 @@ pub(super) fn geojson(
 /// written as the coordinates are, always with a fraction or an exponent; `null` if it is
 /// not finite), `at` (an input index) and the `message` front ends print.
 fn finding_object(f: &Finding) -> String {
-    let message = f.to_string().replace('\\', "\\\\").replace('"', "\\\"");
+    let message = json_text(&f.to_string());
     let worst = if f.worst.is_finite() { format!("{:?}", f.worst) } else { "null".into() };
     format!(
         r#"{{"kind": "{}", "count": {}, "worst": {worst}, "at": {}, "message": "{message}"}}"#,
@@ -87,4 +93,10 @@ fn finding_object(f: &Finding) -> String {
         f.count,
         f.at
     )
+}
+
+/// `text` inside a JSON string: backslashes and quotes escaped (sigdt's messages have no
+/// control characters).
+fn json_text(text: &str) -> String {
+    text.replace('\\', "\\\\").replace('"', "\\\"")
 }

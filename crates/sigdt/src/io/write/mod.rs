@@ -80,10 +80,28 @@ impl FromStr for OutputFormat {
 /// the coordinates from [`Reconstruction::vertex_positions`]: the moved or new vertices
 /// of a method that has them; edges and loops print indices only.
 pub fn write_reconstruction<W: Write>(
+    w: W,
+    format: OutputFormat,
+    points: &[Point],
+    rec: &Reconstruction,
+) -> io::Result<()> {
+    write_reconstruction_with(w, format, points, rec, &WriteOptions::default())
+}
+
+/// What a writer says beside the result itself.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct WriteOptions {
+    /// The method that made the result: GeoJSON's `method` property (none when `None`).
+    pub method: Option<crate::Method>,
+}
+
+/// [`write_reconstruction`] with `options`.
+pub fn write_reconstruction_with<W: Write>(
     mut w: W,
     format: OutputFormat,
     points: &[Point],
     rec: &Reconstruction,
+    options: &WriteOptions,
 ) -> io::Result<()> {
     let mut out = Vec::new();
     let vertices = rec.vertex_positions(points);
@@ -91,7 +109,9 @@ pub fn write_reconstruction<W: Write>(
         OutputFormat::Edges => return write_edges(w, &rec.edges),
         OutputFormat::Loops => loops(&mut out, rec)?,
         OutputFormat::Wkt => wkt::wkt(&mut out, vertices, rec)?,
-        OutputFormat::GeoJson => geojson::geojson(&mut out, points.len(), vertices, rec)?,
+        OutputFormat::GeoJson => {
+            geojson::geojson(&mut out, points.len(), vertices, rec, options.method)?
+        }
     }
     w.write_all(&out)?;
     w.flush()
@@ -236,7 +256,7 @@ mod tests {
         use OutputFormat::GeoJson;
         let square = text(GeoJson, &SQUARE, &square());
         let geometry = r#"{"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]]]}, "#;
-        let properties = r#""properties": {"status": "polygon", "points": 4, "edges": 4, "loops": 1, "paths": 0, "duplicates": 0, "warning": false}}"#;
+        let properties = r#""properties": {"status": "polygon", "status_message": "one closed polygon through every point not left out", "points": 4, "edges": 4, "loops": 1, "paths": 0, "duplicates": 0, "warning": false}}"#;
         assert_eq!(square, format!("{geometry}{properties}\n"));
         let path = text(GeoJson, &SQUARE, &path());
         let lines = r#"{"type": "MultiLineString", "coordinates": [[[0.0, 0.0], [1.0, 1.0]], [[1.0, 0.0], [0.0, 1.0]]]}"#;
