@@ -184,7 +184,12 @@ fn uncompressed<R: BufRead>(
         }
         Format::Npy => done(npy::read(reader, shown, max)?, "a NumPy array"),
         Format::Wkt => done(wkt::read(reader, shown, max)?, "WKT"),
-        Format::GeoJson => done(geojson::read(reader, shown, max)?, "GeoJSON"),
+        Format::GeoJson => {
+            let (points, crs) = geojson::read_with_crs(reader, shown, max)?;
+            // A name sigdt does not know is no system: --crs may give one.
+            let crs = crs.and_then(|name| Crs::parse(&name).ok());
+            Points { points, how: "GeoJSON".into(), crs, lon_lat: false }
+        }
         Format::Table => {
             let table = table::read(reader, shown, None, max)?;
             Points { points: table.points, how: table.how, crs: None, lon_lat: table.lon_lat }

@@ -158,3 +158,30 @@ fn damaged_gis_files_are_clean_errors_naming_the_file() {
     sigdt_in(dir.path(), &["reconstruct", "-"], Some(&text))
         .error(&["<stdin>: a GeoPackage is read in place: give its file name"]);
 }
+
+#[test]
+fn a_geojson_crs_member_is_carried_like_a_geopackages() {
+    // The glyph in metres, as QGIS writes a projected layer: a legacy crs member.
+    let glyph = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/inputs/glyph_sigma.xy");
+    let text = fs::read_to_string(glyph).unwrap();
+    let positions: Vec<String> = text
+        .lines()
+        .filter(|l| !l.trim().is_empty() && !l.starts_with('#'))
+        .map(|l| {
+            let f: Vec<f64> = l.split_whitespace().map(|v| v.parse().unwrap()).collect();
+            format!("[{:?}, {:?}]", 400_000.0 + f[0], 300_000.0 + f[1])
+        })
+        .collect();
+    let geojson = format!(
+        r#"{{"type": "FeatureCollection", "crs": {{"type": "name", "properties": {{"name": "urn:ogc:def:crs:EPSG::27700"}}}}, "features": [{{"type": "Feature", "properties": {{}}, "geometry": {{"type": "MultiPoint", "coordinates": [{}]}}}}]}}"#,
+        positions.join(", ")
+    );
+    let dir = tempdir();
+    fs::write(dir.path().join("pts.geojson"), geojson).unwrap();
+    let run = sigdt_in(dir.path(), &["reconstruct", "pts.geojson", "-v", "-o", "o.gpkg"], None);
+    assert!(run.expect(0).stderr.contains("GeoJSON; in EPSG:27700"), "{run}");
+    let back = sigdt_in(dir.path(), &["reconstruct", "o.gpkg", "--layer", "curves", "-v"], None);
+    assert!(back.expect(0).stderr.contains("in EPSG:27700"), "{back}");
+    sigdt_in(dir.path(), &["reconstruct", "pts.geojson", "--format", "geojson"], None)
+        .error(&["is in EPSG:27700, but GeoJSON is longitude/latitude"]);
+}

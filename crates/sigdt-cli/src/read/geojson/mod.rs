@@ -27,6 +27,7 @@
 //! name, a type, anything in coordinates) stops at 64 KiB.
 
 mod coordinates;
+mod crs;
 mod guard;
 #[cfg(test)]
 mod tests;
@@ -51,7 +52,17 @@ const BOM: &[u8] = b"\xef\xbb\xbf";
 const NOT_AN_OBJECT: &str = "expected a GeoJSON object with a \"type\"";
 
 /// The points of the GeoJSON document of `reader`; see the module docs.
-pub fn read(mut reader: impl Read, name: &str, max_points: usize) -> Result<Vec<Point>> {
+#[cfg(test)]
+pub fn read(reader: impl Read, name: &str, max_points: usize) -> Result<Vec<Point>> {
+    read_with_crs(reader, name, max_points).map(|(points, _)| points)
+}
+
+/// [`read`], and the name in the legacy `crs` member if the document has one (the first).
+pub fn read_with_crs(
+    mut reader: impl Read,
+    name: &str,
+    max_points: usize,
+) -> Result<(Vec<Point>, Option<String>)> {
     let mut head = [0; 3];
     let got = fill(&mut reader, &mut head).map_err(|e| anyhow!("{name}: cannot read: {e}"))?;
     let head = if head[..got] == *BOM { &[][..] } else { &head[..got] };
@@ -64,7 +75,7 @@ pub fn read(mut reader: impl Read, name: &str, max_points: usize) -> Result<Vec<
         document.deserialize(&mut json).and_then(|()| json.end())
     };
     match parsed {
-        Ok(()) => Ok(walk.points),
+        Ok(()) => Ok((walk.points, walk.crs)),
         Err(e) => Err(walk.failure.or_else(|| guard.refusal(name)).unwrap_or_else(|| {
             if e.is_io() {
                 anyhow!("{name}: cannot read: {e}")
@@ -226,6 +237,13 @@ fn members<'de, A: MapAccess<'de>>(walk: &mut Walk, mut map: A) -> Result<(), A:
                 walk.skip(&mut map)?;
                 continue;
             }
+            Member::Crs => {
+                let mark = walk.enter("crs");
+                let name = map.next_value_seed(crs::CrsMember { walk: &mut *walk })?;
+                walk.leave(mark);
+                walk.crs = walk.crs.take().or(name);
+                continue;
+            }
             Member::Type if kind.is_some() => return Err(walk.refuse("more than one \"type\"")),
             Member::Type => {
                 kind = Some(map.next_value_seed(TypeName { walk: &mut *walk })?);
@@ -317,6 +335,8 @@ fn missing<E: de::Error>(walk: &mut Walk, kind: Kind) -> Result<(), E> {
 enum Member {
     Type,
     Part(Part),
+    /// The legacy `crs` member.
+    Crs,
     Other,
 }
 
@@ -341,6 +361,7 @@ impl<'de> Visitor<'de> for MemberName {
             "geometry" => Member::Part(Part::Geometry),
             "geometries" => Member::Part(Part::Geometries),
             "coordinates" => Member::Part(Part::Coordinates),
+            "crs" => Member::Crs,
             _ => Member::Other,
         })
     }

@@ -203,3 +203,21 @@ fn missing_and_repeated_members() {
     let err = error(r#"{"type": "Point", "coordinates": [0, 0], "coordinates": [1, 1]}"#);
     assert!(err.ends_with("the document: more than one \"coordinates\""), "{err}");
 }
+
+#[test]
+fn the_legacy_crs_member_gives_its_name() {
+    // As QGIS writes projected layers.
+    let text = r#"{"type": "FeatureCollection", "name": "pts",
+        "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::27700"}},
+        "features": [{"type": "Feature", "properties": {}, "geometry": {"type": "Point", "coordinates": [1, 2]}}]}"#;
+    let (points, crs) = read_with_crs(text.as_bytes(), "t.geojson", 9).unwrap();
+    assert_eq!((points, crs.as_deref()), (vec![[1.0, 2.0]], Some("urn:ogc:def:crs:EPSG::27700")));
+    // The crs after the features, null, or with other members: read alike.
+    let late = r#"{"type": "MultiPoint", "coordinates": [[0, 0]], "crs": {"properties": {"x": [1], "name": "EPSG:3857"}, "type": "name"}}"#;
+    assert_eq!(read_with_crs(late.as_bytes(), "t", 9).unwrap().1.as_deref(), Some("EPSG:3857"));
+    let none = r#"{"type": "MultiPoint", "coordinates": [[0, 0]], "crs": null}"#;
+    assert_eq!(read_with_crs(none.as_bytes(), "t", 9).unwrap().1, None);
+    let bad = r#"{"type": "MultiPoint", "coordinates": [[0, 0]], "crs": [1]}"#;
+    let err = read_with_crs(bad.as_bytes(), "t", 9).unwrap_err().to_string();
+    assert_eq!(err, "t: GeoJSON: crs: \"crs\" is an array, not a crs object");
+}

@@ -22,12 +22,15 @@ pub(super) struct Walk<'a> {
     pub(super) shape: Shape,
     /// Why a visitor stopped the reading (a serde error cannot carry it).
     pub(super) failure: Option<anyhow::Error>,
+    /// The name in the first legacy `crs` member.
+    pub(super) crs: Option<String>,
 }
 
 impl<'a> Walk<'a> {
     pub(super) fn new(name: &'a str, max_points: usize, skipping: &'a Cell<bool>) -> Self {
         let (path, shape) = (String::new(), Shape::default());
-        Walk { name, max_points, points: Vec::new(), path, skipping, shape, failure: None }
+        let points = Vec::new();
+        Walk { name, max_points, points, path, skipping, shape, failure: None, crs: None }
     }
 
     /// Stops the reading with `failure`.
