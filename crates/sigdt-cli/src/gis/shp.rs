@@ -6,7 +6,7 @@
 //! checked against the record's declared length before anything is allocated, and every
 //! record's length against the bytes that come, so a hostile file costs what it holds.
 
-use std::io::{self, Read};
+use std::io::Read;
 use std::path::Path;
 
 use anyhow::{anyhow, bail, Result};
@@ -29,7 +29,7 @@ pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<Vec<Point>>
     let mut points = Vec::new();
     for number in 1.. {
         let mut head = [0u8; 8];
-        match read_full(&mut reader, &mut head) {
+        match crate::read::read_full(&mut reader, &mut head) {
             Ok(0) => break,
             Ok(8) => {}
             Ok(_) => bail!("{name}: Shapefile: the file ends inside the header of record {number}"),
@@ -49,20 +49,6 @@ pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<Vec<Point>>
             .map_err(|why| anyhow!("{name}: Shapefile record {number}: {why}"))?;
     }
     Ok(points)
-}
-
-/// Reads until `buf` is full or the stream ends; how many bytes were read.
-pub fn read_full(reader: &mut impl Read, buf: &mut [u8]) -> io::Result<usize> {
-    let mut filled = 0;
-    while filled < buf.len() {
-        match reader.read(&mut buf[filled..]) {
-            Ok(0) => break,
-            Ok(n) => filled += n,
-            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
-            Err(e) => return Err(e),
-        }
-    }
-    Ok(filled)
 }
 
 /// The vertices of one record's content.

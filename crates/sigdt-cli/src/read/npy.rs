@@ -112,7 +112,7 @@ fn read_values(
     let mut block = vec![0u8; (1 << 16) * dtype.size];
     while values.len() < count {
         let want = (count - values.len()).min(1 << 16) * dtype.size;
-        let got = fill(reader, &mut block[..want])
+        let got = super::read_full(reader, &mut block[..want])
             .with_context(|| format!("{name}: cannot read the .npy data"))?;
         for b in block[..got].chunks_exact(dtype.size) {
             let value = dtype.value(b).with_context(|| {
@@ -132,20 +132,6 @@ fn read_values(
         }
     }
     Ok(values)
-}
-
-/// Reads into `buf` until it is full or the input ends; the number of bytes read.
-fn fill(reader: &mut impl Read, buf: &mut [u8]) -> std::io::Result<usize> {
-    let mut got = 0;
-    while got < buf.len() {
-        match reader.read(&mut buf[got..]) {
-            Ok(0) => break,
-            Ok(k) => got += k,
-            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
-            Err(e) => return Err(e),
-        }
-    }
-    Ok(got)
 }
 
 /// The value text of `key` in the header's Python dict literal: `'key': value`.

@@ -35,7 +35,7 @@ mod walk;
 
 use std::cell::Cell;
 use std::fmt;
-use std::io::{self, Read};
+use std::io::Read;
 
 use anyhow::{anyhow, Result};
 use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
@@ -64,7 +64,8 @@ pub fn read_with_crs(
     max_points: usize,
 ) -> Result<(Vec<Point>, Option<String>)> {
     let mut head = [0; 3];
-    let got = fill(&mut reader, &mut head).map_err(|e| anyhow!("{name}: cannot read: {e}"))?;
+    let got = super::read_full(&mut reader, &mut head)
+        .map_err(|e| anyhow!("{name}: cannot read: {e}"))?;
     let head = if head[..got] == *BOM { &[][..] } else { &head[..got] };
     let skipping = Cell::new(false);
     let mut guard = Guard::new(head.chain(reader), &skipping);
@@ -84,20 +85,6 @@ pub fn read_with_crs(
             }
         })),
     }
-}
-
-/// Reads into `buf` until it is full or the input ends; the number of bytes read.
-fn fill(reader: &mut impl Read, buf: &mut [u8]) -> io::Result<usize> {
-    let mut got = 0;
-    while got < buf.len() {
-        match reader.read(&mut buf[got..]) {
-            Ok(0) => break,
-            Ok(n) => got += n,
-            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
-            Err(e) => return Err(e),
-        }
-    }
-    Ok(got)
 }
 
 /// What a GeoJSON object is.
