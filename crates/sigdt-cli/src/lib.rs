@@ -31,6 +31,7 @@ mod output;
 mod png;
 mod progress;
 mod read;
+mod stream;
 mod view;
 
 use std::ffi::OsString;

@@ -113,7 +113,7 @@ enum Framing {
 /// verifier wants them). The bytes are read as they arrive: the size allocates nothing.
 fn size_prefixed(reader: &mut impl Read, max: usize) -> Result<Vec<u8>, Framing> {
     let mut size = [0u8; 4];
-    match crate::read::read_full(reader, &mut size).map_err(Framing::Io)? {
+    match crate::stream::read_full(reader, &mut size).map_err(Framing::Io)? {
         0 => return Err(Framing::End),
         4 => {}
         _ => return Err(Framing::Cut),

@@ -29,7 +29,7 @@ pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<Vec<Point>>
     let mut points = Vec::new();
     for number in 1.. {
         let mut head = [0u8; 8];
-        match crate::read::read_full(&mut reader, &mut head) {
+        match crate::stream::read_full(&mut reader, &mut head) {
             Ok(0) => break,
             Ok(8) => {}
             Ok(_) => bail!("{name}: Shapefile: the file ends inside the header of record {number}"),

@@ -253,21 +253,6 @@ fn first_content(head: &[u8]) -> &str {
     text.lines().map(str::trim).find(|l| !l.is_empty() && !l.starts_with('#')).unwrap_or("")
 }
 
-/// Reads into `buf` until it is full or the input ends; the number of bytes read (fewer
-/// than `buf.len()` only at the end).
-pub(crate) fn read_full(reader: &mut impl Read, buf: &mut [u8]) -> std::io::Result<usize> {
-    let mut got = 0;
-    while got < buf.len() {
-        match reader.read(&mut buf[got..]) {
-            Ok(0) => break,
-            Ok(n) => got += n,
-            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
-            Err(e) => return Err(e),
-        }
-    }
-    Ok(got)
-}
-
 /// The error for more than `max` points.
 fn too_many(name: &str, max: usize) -> anyhow::Error {
     anyhow::anyhow!("{name}: more than {max} points (raise --max-points to read more)")

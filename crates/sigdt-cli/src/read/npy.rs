@@ -112,7 +112,7 @@ fn read_values(
     let mut block = vec![0u8; (1 << 16) * dtype.size];
     while values.len() < count {
         let want = (count - values.len()).min(1 << 16) * dtype.size;
-        let got = super::read_full(reader, &mut block[..want])
+        let got = crate::stream::read_full(reader, &mut block[..want])
             .with_context(|| format!("{name}: cannot read the .npy data"))?;
         for b in block[..got].chunks_exact(dtype.size) {
             let value = dtype.value(b).with_context(|| {

@@ -64,7 +64,7 @@ pub fn read_with_crs(
     max_points: usize,
 ) -> Result<(Vec<Point>, Option<String>)> {
     let mut head = [0; 3];
-    let got = super::read_full(&mut reader, &mut head)
+    let got = crate::stream::read_full(&mut reader, &mut head)
         .map_err(|e| anyhow!("{name}: cannot read: {e}"))?;
     let head = if head[..got] == *BOM { &[][..] } else { &head[..got] };
     let skipping = Cell::new(false);
