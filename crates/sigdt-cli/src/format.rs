@@ -35,6 +35,8 @@ pub enum OutputFormat {
 pub struct Context<'a> {
     pub method: Method,
     pub crs: Option<&'a Crs>,
+    /// The EPSG code for GeoJSON's legacy `crs` member, when asked for.
+    pub legacy_crs: Option<u32>,
 }
 
 impl OutputFormat {
@@ -88,7 +90,8 @@ impl OutputFormat {
     ) -> io::Result<()> {
         match self {
             OutputFormat::Text(text) => {
-                let options = WriteOptions { method: Some(context.method) };
+                let legacy_crs = context.legacy_crs.map(|c| format!("urn:ogc:def:crs:EPSG::{c}"));
+                let options = WriteOptions { method: Some(context.method), legacy_crs };
                 sigdt::io::write_reconstruction_with(w, text, points, rec, &options)
             }
             OutputFormat::Svg => w.write_all(picture(points, rec).as_bytes()),
@@ -153,7 +156,7 @@ mod tests {
 
     fn text(format: OutputFormat, points: &[Point], rec: &Reconstruction) -> String {
         let mut out = Vec::new();
-        let context = Context { method: Method::SigConnect2d, crs: None };
+        let context = Context { method: Method::SigConnect2d, crs: None, legacy_crs: None };
         format.write(&mut out, points, rec, context).unwrap();
         String::from_utf8(out).unwrap()
     }

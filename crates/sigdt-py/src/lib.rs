@@ -223,7 +223,7 @@ fn write_reconstruction(
         Some(name) => Some(name.extract::<String>()?.parse::<Method>().map_err(err)?),
         None => None,
     };
-    let options = sigdt::io::WriteOptions { method };
+    let options = sigdt::io::WriteOptions { method, legacy_crs: None };
     let write = || {
         let mut out = Vec::new();
         sigdt::io::write_reconstruction_with(&mut out, format, &pts, &rec, &options).map(|()| out)

@@ -35,6 +35,11 @@ pub struct ReconstructArgs {
     /// (leaf elimination, SIGDT2, is on by default).
     #[arg(long)]
     pub no_leaf_elimination: bool,
+    /// GeoJSON output of points in a projected coordinate system: write them with the
+    /// legacy 'crs' member of GeoJSON 2008 (which RFC 7946 removed; QGIS and GDAL still read
+    /// it) instead of refusing.
+    #[arg(long)]
+    pub geojson_legacy_crs: bool,
     /// Print a summary (counts, status, time, per-stage statistics) to stderr.
     #[arg(short, long)]
     pub verbose: bool,
@@ -68,13 +73,20 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
     let read = input.points_and_how(&args.input)?;
     let (mut points, read_as, crs) = (read.points, read.how, read.crs);
     if let (OutputFormat::Text(TextFormat::GeoJson), Some(crs)) = (format, &crs) {
-        if crs.epsg != Some(4326) {
+        if args.geojson_legacy_crs && crs.epsg.is_none() {
+            bail!(
+                "{}: --geojson-legacy-crs: the legacy crs member names a system by its EPSG \
+                 code, and {crs}: write .gpkg or .fgb, which keep its definition",
+                args.input.display()
+            );
+        }
+        if crs.epsg != Some(4326) && !args.geojson_legacy_crs {
             // RFC 7946: GeoJSON coordinates are WGS 84 longitude and latitude; readers take
             // anything else for degrees.
             bail!(
                 "{} is in {crs}, but GeoJSON is longitude/latitude on WGS 84 (RFC 7946) and \
                  sigdt does not transform coordinates: write .gpkg or .fgb, which keep the \
-                 coordinate system",
+                 coordinate system (or give --geojson-legacy-crs)",
                 args.input.display()
             );
         }
@@ -110,7 +122,8 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         summary(&options, &rec, elapsed, &read_as);
     }
     warnings(&rec);
-    let context = Context { method: args.method, crs: crs.as_ref() };
+    let legacy_crs = crs.as_ref().filter(|_| args.geojson_legacy_crs).and_then(|c| c.epsg);
+    let context = Context { method: args.method, crs: crs.as_ref(), legacy_crs };
     output.write(|w| format.write(w, &points, &rec, context))
 }
 

@@ -184,4 +184,16 @@ fn a_geojson_crs_member_is_carried_like_a_geopackages() {
     assert!(back.expect(0).stderr.contains("in EPSG:27700"), "{back}");
     sigdt_in(dir.path(), &["reconstruct", "pts.geojson", "--format", "geojson"], None)
         .error(&["is in EPSG:27700, but GeoJSON is longitude/latitude"]);
+    // Asked for, the legacy member is written, and read back.
+    let args = ["reconstruct", "pts.geojson", "--geojson-legacy-crs", "-o", "out.geojson"];
+    sigdt_in(dir.path(), &args, None).ok();
+    let text = fs::read_to_string(dir.path().join("out.geojson")).unwrap();
+    let member = r#"{"type": "Feature", "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::27700"}}, "geometry": {"type": "Polygon""#;
+    assert!(text.starts_with(member), "{text}");
+    let back = sigdt_in(dir.path(), &["reconstruct", "out.geojson", "-v"], None);
+    assert!(back.expect(0).stderr.contains("GeoJSON; in EPSG:27700"), "{back}");
+    // A .prj without an EPSG code has no name for the member.
+    let shp = gis("sigma_27700.shp");
+    sigdt(&["reconstruct", arg(&shp), "--format", "geojson", "--geojson-legacy-crs"])
+        .error(&["the legacy crs member names a system by its EPSG code"]);
 }

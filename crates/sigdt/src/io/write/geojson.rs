@@ -1,5 +1,6 @@
 //! GeoJSON: one `Feature` whose geometry holds the loops and paths and whose properties give
-//! the status (its name and what it means), the method when the caller names it, and counts (`points` counts the input; `vertices`, written only when the
+//! the status (its name and what it means), the method when the caller names it, and counts
+//! (and, when asked, the legacy `crs` member of GeoJSON 2008) (`points` counts the input; `vertices`, written only when the
 //! method moved the points or placed its own, counts the positions the geometry uses), the
 //! points left out with their reasons (when there are any), whether front ends warn, and
 //! the sampling check's findings (when there are any).
@@ -49,14 +50,19 @@ pub(super) fn geojson(
     n: usize,
     vertices: &[Point],
     rec: &Reconstruction,
-    method: Option<crate::Method>,
+    options: &super::WriteOptions,
 ) -> io::Result<()> {
-    out.extend_from_slice(br#"{"type": "Feature", "geometry": "#);
+    out.extend_from_slice(br#"{"type": "Feature", "#);
+    if let Some(name) = &options.legacy_crs {
+        let name = json_text(name);
+        write!(out, r#""crs": {{"type": "name", "properties": {{"name": "{name}"}}}}, "#)?;
+    }
+    out.extend_from_slice(br#""geometry": "#);
     geometry::<GeoJson>(out, vertices, rec)?;
     let (m, d, status) = (rec.edges.len(), rec.duplicates.len(), rec.status.name());
     let message = json_text(&rec.status.to_string());
     write!(out, r#", "properties": {{"status": "{status}", "status_message": "{message}", "#)?;
-    if let Some(method) = method {
+    if let Some(method) = options.method {
         write!(out, r#""method": "{method}", "#)?;
     }
     write!(out, r#""points": {n}, "#)?;

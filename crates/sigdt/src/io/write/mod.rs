@@ -89,10 +89,14 @@ pub fn write_reconstruction<W: Write>(
 }
 
 /// What a writer says beside the result itself.
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Default)]
 pub struct WriteOptions {
     /// The method that made the result: GeoJSON's `method` property (none when `None`).
     pub method: Option<crate::Method>,
+    /// A coordinate system's name (`urn:ogc:def:crs:EPSG::27700`) for GeoJSON's legacy
+    /// `crs` member (GeoJSON 2008), which RFC 7946 removed: only for readers that still
+    /// honour it, when the coordinates are not WGS 84 longitude/latitude.
+    pub legacy_crs: Option<String>,
 }
 
 /// [`write_reconstruction`] with `options`.
@@ -109,9 +113,7 @@ pub fn write_reconstruction_with<W: Write>(
         OutputFormat::Edges => return write_edges(w, &rec.edges),
         OutputFormat::Loops => loops(&mut out, rec)?,
         OutputFormat::Wkt => wkt::wkt(&mut out, vertices, rec)?,
-        OutputFormat::GeoJson => {
-            geojson::geojson(&mut out, points.len(), vertices, rec, options.method)?
-        }
+        OutputFormat::GeoJson => geojson::geojson(&mut out, points.len(), vertices, rec, options)?,
     }
     w.write_all(&out)?;
     w.flush()
