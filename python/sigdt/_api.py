@@ -246,13 +246,16 @@ def read_points(
     *,
     columns: str | None = None,
     max_points: int | None = None,
+    layer: str | None = None,
 ) -> Coordinates:
     """Read a point file in any format the command line reads, with its reader.
 
     Plain text with two numbers a line (``.xy``, ``.txt``, ``.csv``, ``.p2d``; ``#``
     comments, one header line), Dey's ``.gtn``, CSV tables (``,``, ``;`` or tab separated,
-    quoted fields, a header), WKT, GeoJSON, NumPy ``.npy`` arrays, and each of these
-    gzip-compressed (``.gz``).
+    quoted fields, a header), WKT, GeoJSON, NumPy ``.npy`` arrays, each of these
+    gzip-compressed (``.gz``), and the vertices of GeoPackage, FlatGeobuf and Shapefile
+    features (``geopandas.read_file`` keeps their coordinate system; this returns
+    coordinates only).
 
     Parameters
     ----------
@@ -264,6 +267,9 @@ def read_points(
         numbers from 1 (``"lon,lat"``, ``"3,4"``).
     max_points : int, optional
         Refuse a file with more points (reading stops at the first one over).
+    layer : str, optional
+        The layer of a GeoPackage, as ``--layer`` (by default the only layer, or the only
+        point layer).
 
     Returns
     -------
@@ -276,7 +282,7 @@ def read_points(
         The content is not points; the message names the file (and line). (A ValueError.)
     ValueError
         ``columns`` is malformed, or given for a format without columns (WKT, GeoJSON,
-        ``.gtn``, ``.npy``).
+        ``.gtn``, ``.npy``, GIS formats); ``layer`` is given for a format without layers.
     OSError
         The file cannot be read.
 
@@ -296,4 +302,4 @@ def read_points(
     array([[0., 0.],
            [2., 1.]])
     """
-    return _core.read_points(os.fspath(path), columns, max_points)
+    return _core.read_points(os.fspath(path), columns, max_points, layer)

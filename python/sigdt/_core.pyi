@@ -87,7 +87,10 @@ def proximity_graph(
     points: npt.NDArray[np.float64], kind: str, k: int | None = None
 ) -> npt.NDArray[np.int64]: ...
 def read_points(
-    path: str | os.PathLike[str], columns: str | None = None, max_points: int | None = None
+    path: str | os.PathLike[str],
+    columns: str | None = None,
+    max_points: int | None = None,
+    layer: str | None = None,
 ) -> npt.NDArray[np.float64]: ...
 def place(
     points: npt.NDArray[np.float64], width: float

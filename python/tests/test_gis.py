@@ -152,3 +152,22 @@ def test_cli_flatgeobuf_with_outliers_carries_left_out_points(cli: Path, tmp_pat
     assert curves["kind"].tolist() == ["polygon"] and curves["method"].iloc[0] == "sig-auto"
     assert sorted(left["row"].astype(int)) == [245, 246, 247]
     assert set(left["reason"]) == {"outlier"}
+
+
+def test_read_points_reads_gis_files_and_layers() -> None:
+    glyph = sigdt.read_points(ROOT / "data" / "inputs" / "glyph_sigma.xy")
+    for name in ("sigma_27700.gpkg", "sigma_27700.shp"):
+        points = sigdt.read_points(GIS / name)
+        assert points.shape == (245, 2)
+        assert np.allclose(
+            points - points.min(axis=0),
+            (glyph - glyph.min(axis=0))
+            * np.ptp(points, axis=0).max()
+            / np.ptp(glyph, axis=0).max(),
+        )
+    hull = sigdt.read_points(GIS / "two_layers.gpkg", layer="hull")
+    assert 3 <= len(hull) < 245
+    with pytest.raises(sigdt.ParseError, match="no feature layer 'roads'"):
+        sigdt.read_points(GIS / "two_layers.gpkg", layer="roads")
+    with pytest.raises(ValueError, match="which has no layers"):
+        sigdt.read_points(GIS / "sigma_27700.fgb", layer="x")

@@ -58,15 +58,16 @@ pub enum ReadError {
 }
 
 /// The points of the file at `path` in any format the command line reads (with `columns`
-/// as `--columns`, and at most `max_points`), one reader for the binary and the Python
-/// package's `read_points`.
+/// as `--columns`, `layer` as `--layer`, and at most `max_points`), one reader for the
+/// binary and the Python package's `read_points`.
 pub fn read_points_file(
     path: &std::path::Path,
     columns: Option<&str>,
+    layer: Option<&str>,
     max_points: usize,
 ) -> Result<Vec<sigdt::Point>, ReadError> {
     let columns = parse_columns(columns)?;
-    let input = Input::new(max_points, columns);
+    let input = Input::new(max_points, columns).with_gis(layer.map(str::to_string), None);
     input.points(path).map_err(read_error)
 }
 

@@ -275,15 +275,17 @@ fn place<'py>(
 /// `read_points(path, columns, max_points) -> (n, 2) float64 array`, in any format the CLI
 /// reads, by the CLI's reader.
 #[pyfunction]
-#[pyo3(signature = (path, columns=None, max_points=None))]
+#[pyo3(signature = (path, columns=None, max_points=None, layer=None))]
 fn read_points<'py>(
     py: Python<'py>,
     path: std::path::PathBuf,
     columns: Option<String>,
     max_points: Option<usize>,
+    layer: Option<String>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let max_points = max_points.unwrap_or(usize::MAX);
-    let read = || sigdt_cli::read_points_file(&path, columns.as_deref(), max_points);
+    let read =
+        || sigdt_cli::read_points_file(&path, columns.as_deref(), layer.as_deref(), max_points);
     let pts = py.detach(read).map_err(|e| match e {
         sigdt_cli::ReadError::Io(io) => err(io),
         sigdt_cli::ReadError::Usage(message) => PyValueError::new_err(message),
