@@ -287,14 +287,26 @@ fn choose(
     header: Option<&[String]>,
     width: usize,
 ) -> Result<(usize, usize), String> {
-    // The first few names: a header of hundreds would make a message no one reads.
+    // The first few names, at most eight and about 300 characters: a header of hundreds,
+    // or of long names full of escaped control characters, would make a message no one
+    // reads.
     const SHOWN: usize = 8;
+    const CHARACTERS: usize = 300;
     let names = || {
         let Some(header) = header else { return String::new() };
-        let shown: Vec<_> = header.iter().take(SHOWN).map(|n| quoted(n)).collect();
-        match header.len().checked_sub(SHOWN).filter(|&more| more > 0) {
-            Some(more) => format!("{}, and {more} more", shown.join(", ")),
-            None => shown.join(", "),
+        let mut shown: Vec<String> = Vec::new();
+        let mut length = 0;
+        for name in header.iter().take(SHOWN) {
+            let name = quoted(name);
+            if !shown.is_empty() && length + name.len() > CHARACTERS {
+                break;
+            }
+            length += name.len() + 2;
+            shown.push(name);
+        }
+        match header.len() - shown.len() {
+            0 => shown.join(", "),
+            more => format!("{}, and {more} more", shown.join(", ")),
         }
     };
     let find = |wanted: &str| {
@@ -427,6 +439,12 @@ mod tests {
         let err = parse(&text, None).unwrap_err().to_string();
         let want = "'c0', 'c1', 'c2', 'c3', 'c4', 'c5', 'c6', 'c7', and 292 more)";
         assert!(err.contains(want) && err.len() < 200, "{err}");
+        // Fuzz finding 16: eight names of control characters, each escaped six times its
+        // length, still made a message of 1,020 characters.
+        let odd: Vec<String> = (0..15).map(|i| format!("Y{}{i}", "\u{c}".repeat(40))).collect();
+        let text = format!("{}\n{}\n", odd.join(","), vec!["1"; 15].join(","));
+        let err = parse(&text, Some("x,y")).unwrap_err().to_string();
+        assert!(err.len() < 500 && err.ends_with(" more)"), "{} characters: {err}", err.len());
         let err = parse("1,2,3\n", Some("x,y")).unwrap_err().to_string();
         assert!(err.contains("no header row"), "{err}");
         assert!(parse("1,2,3\n", Some("1,5")).unwrap_err().to_string().contains("column 5"));
