@@ -68,6 +68,10 @@ impl Input {
                 );
             }
             (None, Some(given)) => read.crs = Some(given.clone()),
+            // A definition without a code (an ESRI .prj): --crs names it.
+            (Some(declared), Some(given)) if declared.epsg.is_none() => {
+                read.crs = Some(Crs { epsg: given.epsg, wkt: declared.wkt.clone() });
+            }
             _ => {}
         }
         Ok(read)

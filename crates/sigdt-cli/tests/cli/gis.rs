@@ -80,6 +80,10 @@ fn geopackage_and_flatgeobuf_output_keep_the_coordinate_system() {
     sigdt(&["reconstruct", arg(&gis("sigma_27700.gpkg")), "--crs", "EPSG:4326"])
         .error(&["is in EPSG:27700, but --crs says EPSG:4326: sigdt does not transform"]);
     sigdt(&["reconstruct", arg(&glyph), "--crs", "WGS84"]).usage_error();
+    // A .prj without an EPSG code: --crs names it.
+    let shp = gis("sigma_27700.shp");
+    let run = sigdt(&["reconstruct", arg(&shp), "--crs", "EPSG:27700", "-v"]);
+    assert!(run.expect(0).stderr.contains("(its .prj read); in EPSG:27700"), "{run}");
 }
 
 #[test]
