@@ -192,7 +192,7 @@ fn vertices(
                 continue; // an empty point
             }
             if !p.iter().all(|c| c.is_finite()) {
-                return Err(format!("coordinate {} {} is not finite", p[0], p[1]));
+                return Err(format!("coordinate {:?} {:?} is not finite", p[0], p[1]));
             }
             if out.len() == max {
                 return Err(format!("more than {max} points (raise --max-points to read more)"));

@@ -35,7 +35,7 @@ impl LocalProjection {
         for (k, p) in points.iter().enumerate() {
             if !(-180.0..=360.0).contains(&p[0]) || !(-90.0..=90.0).contains(&p[1]) {
                 bail!(
-                    "{what}, but point {k} ({}, {}) is not a longitude and a latitude in \
+                    "{what}, but point {k} ({:?}, {:?}) is not a longitude and a latitude in \
                      degrees: is the coordinate system right?",
                     p[0],
                     p[1]
@@ -152,7 +152,7 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(
-            err.contains("point 0 (400000, 300000) is not a longitude and a latitude"),
+            err.contains("point 0 (400000.0, 300000.0) is not a longitude and a latitude"),
             "{err}"
         );
         let spread = [[-170.0, 0.0], [-10.0, 0.0], [90.0, 0.0]];

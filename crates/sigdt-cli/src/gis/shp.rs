@@ -64,7 +64,7 @@ fn record(content: &[u8], out: &mut Vec<Point>, max: usize) -> Result<(), String
     };
     let push = |p: Point, out: &mut Vec<Point>| -> Result<(), String> {
         if !p.iter().all(|c| c.is_finite()) {
-            return Err(format!("coordinate {} {} is not finite", p[0], p[1]));
+            return Err(format!("coordinate {:?} {:?} is not finite", p[0], p[1]));
         }
         if out.len() == max {
             return Err(format!("more than {max} points (raise --max-points to read more)"));
@@ -190,7 +190,7 @@ mod tests {
         let err = read(&b"not a shapefile"[..], "t.shp", 10).unwrap_err().to_string();
         assert!(err.contains("ends inside its 100-byte header"), "{err}");
         let err = read(&shp(&[point(f64::NAN, 0.0)])[..], "t.shp", 10).unwrap_err().to_string();
-        assert!(err.contains("record 1: coordinate NaN 0 is not finite"), "{err}");
+        assert!(err.contains("record 1: coordinate NaN 0.0 is not finite"), "{err}");
         let many: Vec<_> = (0..11).map(|k| point(k as f64, 0.0)).collect();
         let err = read(&shp(&many)[..], "t.shp", 10).unwrap_err().to_string();
         assert!(err.contains("record 11: more than 10 points"), "{err}");

@@ -130,7 +130,7 @@ impl Reader<'_, '_> {
             return Ok(());
         }
         if !p.iter().all(|c| c.is_finite()) {
-            return Err(format!("byte {at}: coordinate {} {} is not finite", p[0], p[1]));
+            return Err(format!("byte {at}: coordinate {:?} {:?} is not finite", p[0], p[1]));
         }
         if self.out.len() == self.max {
             return Err(format!("more than {} points (raise --max-points to read more)", self.max));
@@ -230,6 +230,44 @@ mod tests {
             b.extend_from_slice(&v.to_le_bytes());
         }
         assert_eq!(read(&b).unwrap(), vec![[3.0, 4.0]]);
+    }
+
+    #[test]
+    fn mutated_geometries_never_panic_and_stay_bounded() {
+        // Random byte changes and cuts of valid geometries (a polygon with a hole, a
+        // collection): an answer or a short error, never a panic or more than the limit.
+        let mut w = Writer(Vec::new());
+        w.polygon(&[
+            vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0]],
+            vec![[1.0, 1.0], [2.0, 1.0], [1.0, 2.0]],
+        ]);
+        let mut collection = vec![1u8];
+        collection.extend_from_slice(&7u32.to_le_bytes());
+        collection.extend_from_slice(&2u32.to_le_bytes());
+        collection.extend_from_slice(&w.0);
+        let mut line = Writer(Vec::new());
+        line.line_string(&[[0.0, 0.0], [1.0, 1.0]]);
+        collection.extend_from_slice(&line.0);
+        let mut rng = sigdt::samplers::Rng::new(3);
+        for case in 0..20_000 {
+            let mut bytes = if case % 2 == 0 { w.0.clone() } else { collection.clone() };
+            for _ in 0..1 + rng.below(4) {
+                let at = rng.below(bytes.len());
+                bytes[at] = match rng.below(3) {
+                    0 => rng.below(256) as u8,
+                    1 => 0xff,
+                    _ => 0,
+                };
+            }
+            if rng.below(4) == 0 {
+                bytes.truncate(rng.below(bytes.len() + 1));
+            }
+            let mut out = Vec::new();
+            match read_vertices(&bytes, &mut out, 5) {
+                Ok(()) => assert!(out.len() <= 5 && out.iter().flatten().all(|c| c.is_finite())),
+                Err(why) => assert!(why.len() < 200, "case {case}: {why}"),
+            }
+        }
     }
 
     #[test]
