@@ -164,6 +164,7 @@ def reconstruct_frame(
     {'a': {'status': 'polygon', 'n_points': 4}, 'b': {'status': 'polygon', 'n_points': 4}}
     """
     import geopandas as gpd
+    import pandas as pd
 
     _check_method(method)
     threads = _threads(n_jobs)
@@ -211,8 +212,6 @@ def reconstruct_frame(
         "n_left_out": np.asarray([len(r.left_out) for r in results], dtype=np.int64),
     }
     geometry = [r.to_shapely() for r in results]
-    import pandas as pd
-
     if by is None:
         index = pd.RangeIndex(1)
     elif isinstance(by, (list, tuple)):
