@@ -8,6 +8,7 @@ use std::path::Path;
 use anyhow::Result;
 use sigdt::{Edge, Point};
 
+use crate::gis::local::why_degrees;
 use crate::gis::Crs;
 use crate::output::is_dash;
 use crate::read::{self, Columns, Reading};
@@ -40,6 +41,21 @@ impl Input {
     /// [`crate::read`].
     pub fn points(&self, input: &Path) -> Result<Vec<Point>> {
         Ok(self.points_and_how(input)?.points)
+    }
+
+    /// [`Input::points`] for a command that works in the plane of the coordinates, with a
+    /// warning on stderr when they are longitude and latitude (only `reconstruct` uses a
+    /// local plane for those).
+    pub fn plane_points(&self, input: &Path, command: &str) -> Result<Vec<Point>> {
+        let read = self.points_and_how(input)?;
+        if let Some(why) = why_degrees(read.crs.as_ref(), read.lon_lat) {
+            crate::messages::note(&format!(
+                "sigdt: warning: {why}, but `{command}` works in the plane of the \
+                 coordinates: its lengths depend on the latitude (`reconstruct` uses a local \
+                 plane)"
+            ));
+        }
+        Ok(read.points)
     }
 
     /// [`Input::points`], and how they were read (the format; a table's columns).

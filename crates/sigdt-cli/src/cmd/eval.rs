@@ -31,7 +31,7 @@ pub struct EvalArgs {
 pub fn run(args: &EvalArgs, input: &Input) -> Result<()> {
     let progress = Stages::new("eval");
     progress.stage(format!("reading {}", args.input.display()));
-    let points = input.points(&args.input)?;
+    let points = input.plane_points(&args.input, "eval")?;
     let gt = edges_of(&args.gt, points.len(), "--gt")?;
     let (label, edges) = match &args.edges {
         Some(file) => (file.display().to_string(), edges_of(file, points.len(), "--edges")?),

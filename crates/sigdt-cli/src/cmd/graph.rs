@@ -53,7 +53,7 @@ impl GraphArgs {
 pub fn run(args: &GraphArgs, input: &Input) -> Result<()> {
     let kind = args.kind()?;
     let output = Output::new(args.output.as_deref(), &args.input)?;
-    let points = input.points(&args.input)?;
+    let points = input.plane_points(&args.input, "graph")?;
     let edges = sigdt::proximity_graph(&points, kind)?;
     output.write(|w| sigdt::io::write_edges(w, &edges))
 }

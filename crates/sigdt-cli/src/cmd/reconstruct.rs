@@ -10,7 +10,7 @@ use sigdt::io::OutputFormat as TextFormat;
 use sigdt::{Method, Options, Reconstruction, Vertices};
 
 use crate::format::{Context, OutputFormat};
-use crate::gis::{local::reconstruct_in_plane, Crs};
+use crate::gis::local::{reconstruct_in_plane, why_degrees};
 use crate::input::Input;
 use crate::messages::{note, UsageError};
 use crate::output::{is_dash, Output};
@@ -125,19 +125,6 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
     let legacy_crs = crs.as_ref().filter(|_| args.geojson_legacy_crs).and_then(|c| c.epsg);
     let context = Context { method: args.method, crs: crs.as_ref(), legacy_crs };
     output.write(|w| format.write(w, &points, &rec, context))
-}
-
-/// Why the points are longitude and latitude in degrees, if they are: the coordinate
-/// system is geographic, or the columns are named so. They are then reconstructed in a
-/// local plane ([`reconstruct_in_plane`]).
-fn why_degrees(crs: Option<&Crs>, lon_lat: bool) -> Option<String> {
-    match crs {
-        Some(crs) if crs.is_geographic() == Some(true) => {
-            Some(format!("{crs} is longitude/latitude"))
-        }
-        _ if lon_lat => Some("the columns are longitude and latitude".to_string()),
-        _ => None,
-    }
 }
 
 /// `--format` values, listed in the help and checked by clap.

@@ -86,7 +86,7 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     let output = Output::new(Some(&args.output), &args.input)?;
     let progress = Stages::new("render");
     progress.stage(format!("reading {}", args.input.display()));
-    let points = input.points(&args.input)?;
+    let points = input.plane_points(&args.input, "render")?;
     too_many_to_draw(&args.input, points.len())?;
     let gt = ground_truth(args.gt.as_deref(), points.len())?;
     let mut wanted = args.layers.clone();

@@ -57,7 +57,7 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
     let output = Output::new(Some(&args.output), &args.input)?;
     let progress = Stages::new("view");
     progress.stage(format!("reading {}", args.input.display()));
-    let points = input.points(&args.input)?;
+    let points = input.plane_points(&args.input, "view")?;
     too_many_to_view(&args.input, points.len())?;
     let gt = ground_truth(args.gt.as_deref(), points.len())?;
     // One triangulation serves the reconstruction, the graphs and the SIG radii.

@@ -12,6 +12,20 @@
 use anyhow::{bail, Result};
 use sigdt::{Options, Point, Reconstruction, Vertices};
 
+use super::Crs;
+
+/// Why points are longitude and latitude in degrees, if they are: their coordinate system
+/// is geographic, or a table's columns are named so (`lon_lat`).
+pub fn why_degrees(crs: Option<&Crs>, lon_lat: bool) -> Option<String> {
+    match crs {
+        Some(crs) if crs.is_geographic() == Some(true) => {
+            Some(format!("{crs} is longitude/latitude"))
+        }
+        _ if lon_lat => Some("the columns are longitude and latitude".to_string()),
+        _ => None,
+    }
+}
+
 /// The sphere's radius: the mean Earth radius R₁ of IUGG 1980, in metres.
 const RADIUS: f64 = 6_371_008.8;
 

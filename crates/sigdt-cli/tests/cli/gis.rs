@@ -201,3 +201,16 @@ fn a_geojson_crs_member_is_carried_like_a_geopackages() {
     sigdt(&["reconstruct", arg(&shp), "--format", "geojson", "--geojson-legacy-crs"])
         .error(&["the legacy crs member names a system by its EPSG code"]);
 }
+
+#[test]
+fn commands_in_the_plane_warn_about_degrees() {
+    // Only `reconstruct` uses a local plane; the others say that they do not.
+    let degrees = gis("sigma_4326.gpkg");
+    let run = sigdt(&["graph", arg(&degrees), "--kind", "sigdt"]);
+    let warning = "sigdt: warning: EPSG:4326 is longitude/latitude, but `graph` works in the \
+                   plane of the coordinates";
+    assert!(run.expect(0).stderr.starts_with(warning), "{run}");
+    assert_eq!(run.stderr.lines().count(), 1, "{run}");
+    // Metres: nothing to say.
+    sigdt(&["graph", arg(&gis("sigma_27700.gpkg")), "--kind", "sigdt"]).ok();
+}
