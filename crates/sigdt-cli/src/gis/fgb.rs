@@ -23,7 +23,7 @@ use flatgeobuf::{
 use sigdt::Point;
 
 use super::crs::Crs;
-use super::layers::Layers;
+use super::layers::{Curve, CurveKind, Layers};
 
 /// The first bytes of a FlatGeobuf file: `fgb`, the major version 3, `fgb`, a patch level.
 pub const MAGIC: &[u8] = b"fgb\x03fgb";
@@ -237,10 +237,9 @@ pub fn write(layers: &Layers, crs: Option<&Crs>) -> Result<Vec<u8>> {
     }
     let run = &layers.run;
     for curve in &layers.curves {
-        let geometry = Wkb(&curve.wkb);
-        fgb.add_feature_geom(geometry, |f| {
+        fgb.add_feature_geom(curve, |f| {
             let values = [
-                (0, "kind", ColumnValue::String(curve.kind)),
+                (0, "kind", ColumnValue::String(curve.kind.name())),
                 (1, "method", ColumnValue::String(&run.method)),
                 (2, "status", ColumnValue::String(run.status)),
                 (3, "warning", ColumnValue::Bool(run.warning)),
@@ -253,9 +252,7 @@ pub fn write(layers: &Layers, crs: Option<&Crs>) -> Result<Vec<u8>> {
         })?;
     }
     for left in &layers.left_out {
-        let mut w = super::wkb::Writer(Vec::new());
-        w.point(left.point);
-        fgb.add_feature_geom(Wkb(&w.0), |f| {
+        fgb.add_feature_geom(LeftOutPoint(left.point), |f| {
             let values = [
                 (0, "kind", ColumnValue::String("left-out")),
                 (6, "row", ColumnValue::Long(left.row as i64)),
@@ -271,55 +268,39 @@ pub fn write(layers: &Layers, crs: Option<&Crs>) -> Result<Vec<u8>> {
     Ok(out)
 }
 
-/// A geometry sigdt wrote as well-known binary ([`super::wkb::Writer`]: little-endian,
-/// two-dimensional points, line strings and polygons), replayed to a geozero processor.
-struct Wkb<'a>(&'a [u8]);
-
-impl GeozeroGeometry for Wkb<'_> {
+/// A curve's geometry for geozero: a polygon's rings closed (their first point repeated, as
+/// the format wants), or a line string.
+impl GeozeroGeometry for &Curve {
     fn process_geom<P: GeomProcessor>(&self, p: &mut P) -> Result<(), GeozeroError> {
-        let mut at = 0;
-        let u32_ = |at: &mut usize| {
-            let v = u32::from_le_bytes(self.0[*at..*at + 4].try_into().expect("4 bytes"));
-            *at += 4;
-            v as usize
-        };
-        let f64_ = |at: &mut usize| {
-            let v = f64::from_le_bytes(self.0[*at..*at + 8].try_into().expect("8 bytes"));
-            *at += 8;
-            v
-        };
-        at += 1; // byte order: little-endian
-        match u32_(&mut at) {
-            1 => {
-                p.point_begin(0)?;
-                let (x, y) = (f64_(&mut at), f64_(&mut at));
-                p.xy(x, y, 0)?;
-                p.point_end(0)
+        let line = |p: &mut P, points: &[Point], tagged: bool, k: usize| {
+            let closing = (!tagged).then(|| points[0]);
+            let all: Vec<_> = points.iter().copied().chain(closing).collect();
+            p.linestring_begin(tagged, all.len(), k)?;
+            for (i, [x, y]) in all.into_iter().enumerate() {
+                p.xy(x, y, i)?;
             }
-            2 => {
-                let n = u32_(&mut at);
-                p.linestring_begin(true, n, 0)?;
-                for i in 0..n {
-                    let (x, y) = (f64_(&mut at), f64_(&mut at));
-                    p.xy(x, y, i)?;
-                }
-                p.linestring_end(true, 0)
-            }
-            3 => {
-                let rings = u32_(&mut at);
-                p.polygon_begin(true, rings, 0)?;
-                for r in 0..rings {
-                    let n = u32_(&mut at);
-                    p.linestring_begin(false, n, r)?;
-                    for i in 0..n {
-                        let (x, y) = (f64_(&mut at), f64_(&mut at));
-                        p.xy(x, y, i)?;
-                    }
-                    p.linestring_end(false, r)?;
+            p.linestring_end(tagged, k)
+        };
+        match self.kind {
+            CurveKind::Path => line(p, &self.rings[0], true, 0),
+            CurveKind::Polygon => {
+                p.polygon_begin(true, self.rings.len(), 0)?;
+                for (k, ring) in self.rings.iter().enumerate() {
+                    line(p, ring, false, k)?;
                 }
                 p.polygon_end(true, 0)
             }
-            other => unreachable!("sigdt writes no geometry type {other}"),
         }
+    }
+}
+
+/// A left-out point's geometry for geozero.
+struct LeftOutPoint(Point);
+
+impl GeozeroGeometry for LeftOutPoint {
+    fn process_geom<P: GeomProcessor>(&self, p: &mut P) -> Result<(), GeozeroError> {
+        p.point_begin(0)?;
+        p.xy(self.0[0], self.0[1], 0)?;
+        p.point_end(0)
     }
 }

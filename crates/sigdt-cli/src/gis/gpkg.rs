@@ -220,11 +220,9 @@ pub fn write(layers: &Layers, crs: Option<&Crs>) -> Result<Vec<u8>> {
              VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)",
         )?;
         for curve in &layers.curves {
-            let mut blob = header(srs_id);
-            blob.extend_from_slice(&curve.wkb);
             insert.execute(rusqlite::params![
-                blob,
-                curve.kind,
+                curve.wkb(header(srs_id)),
+                curve.kind.name(),
                 run.method,
                 run.status,
                 run.warning,

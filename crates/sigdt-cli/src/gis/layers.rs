@@ -10,14 +10,42 @@ use super::wkb::Writer;
 
 /// One feature of the `curves` layer.
 pub struct Curve {
-    /// `polygon` or `path`.
-    pub kind: &'static str,
-    /// Its geometry as well-known binary.
-    pub wkb: Vec<u8>,
+    pub kind: CurveKind,
+    /// A polygon's rings (the shell, then its holes; not closed), or a path's one line.
+    pub rings: Vec<Vec<Point>>,
     /// Points on it (a polygon's rings together).
     pub vertices: usize,
     /// The bounding box `[min x, min y, max x, max y]`.
     pub bounds: [f64; 4],
+}
+
+/// What a curve is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CurveKind {
+    Polygon,
+    Path,
+}
+
+impl CurveKind {
+    /// The `kind` attribute.
+    pub fn name(self) -> &'static str {
+        match self {
+            CurveKind::Polygon => "polygon",
+            CurveKind::Path => "path",
+        }
+    }
+}
+
+impl Curve {
+    /// The geometry as well-known binary, after `prefix` (GeoPackage's header).
+    pub fn wkb(&self, prefix: Vec<u8>) -> Vec<u8> {
+        let mut w = Writer(prefix);
+        match self.kind {
+            CurveKind::Polygon => w.polygon(&self.rings),
+            CurveKind::Path => w.line_string(&self.rings[0]),
+        }
+        w.0
+    }
 }
 
 /// What every curve says about the run.
@@ -54,26 +82,10 @@ impl Layers {
                 .chain(polygon.holes.iter().copied())
                 .map(|k| ring(&rec.loops[k]))
                 .collect();
-            let mut w = Writer(Vec::new());
-            w.polygon(&rings);
-            let count = rings.iter().map(Vec::len).sum();
-            curves.push(Curve {
-                kind: "polygon",
-                wkb: w.0,
-                vertices: count,
-                bounds: bounds(&rings[0]),
-            });
+            curves.push(Curve::new(CurveKind::Polygon, rings));
         }
         for path in &rec.paths {
-            let line = ring(path);
-            let mut w = Writer(Vec::new());
-            w.line_string(&line);
-            curves.push(Curve {
-                kind: "path",
-                wkb: w.0,
-                vertices: line.len(),
-                bounds: bounds(&line),
-            });
+            curves.push(Curve::new(CurveKind::Path, vec![ring(path)]));
         }
         let findings: Vec<String> = rec.diagnosis.iter().map(ToString::to_string).collect();
         let run = Run {
@@ -88,6 +100,14 @@ impl Layers {
             .map(|l| LeftOut { point: points[l.index], row: l.index, reason: l.reason.name() })
             .collect();
         Layers { run, curves, left_out }
+    }
+}
+
+impl Curve {
+    fn new(kind: CurveKind, rings: Vec<Vec<Point>>) -> Curve {
+        let vertices = rings.iter().map(Vec::len).sum();
+        let bounds = bounds(&rings[0]);
+        Curve { kind, rings, vertices, bounds }
     }
 }
 

@@ -226,7 +226,7 @@ fn members<'de, A: MapAccess<'de>>(walk: &mut Walk, mut map: A) -> Result<(), A:
             }
             Member::Crs => {
                 let mark = walk.enter("crs");
-                let name = map.next_value_seed(crs::CrsMember { walk: &mut *walk })?;
+                let name = map.next_value_seed(crs::crs_seed(&mut *walk))?;
                 walk.leave(mark);
                 walk.crs = walk.crs.take().or(name);
                 continue;
