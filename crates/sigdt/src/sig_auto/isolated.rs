@@ -14,9 +14,11 @@
 //! has) and its median spacing is at least [`LONG_EDGE_RATIO`] times that of a piece of at
 //! least [`MIN_LOOP_POINTS`] points it shares a Delaunay edge with: sampled far more
 //! coarsely than the curve beside it. So is a larger such piece of at most a twentieth of
-//! the points of that curve that is a *cloud*: along its minimum spanning tree (which runs
-//! along a sampled curve) u < 2 fails at more than one vertex in eight, which scattered
-//! points do and islands hardly ever ([`is_cloud`]). A larger
+//! the points of the denser curves beside it (an archipelago's outliers lie beside many
+//! small islands) that is a *cloud*: along its minimum spanning tree (which runs along a
+//! sampled curve) u < 2 fails at more than one vertex in eight, which scattered points do
+//! and islands hardly ever ([`is_cloud`]). Small pieces in a cloud that lie beside no
+//! curve, only beside the cloud, are isolated with it ([`isolate_open_sea`]). A larger
 //! coarse piece that keeps u < 2, or holds more points, is a curve (an island sampled more
 //! coarsely than the coast beside it, a polygon given by its vertices); so is a small piece
 //! sampled like its surroundings (a noisy curve's fragments, a glyph's dot).
@@ -86,26 +88,82 @@ pub(super) fn isolated_pieces(dt: &Triangulation) -> Vec<Vec<u32>> {
             *s.select_nth_unstable_by(k, f64::total_cmp).1
         })
         .collect();
-    let mut isolated = Vec::new();
-    for (id, group) in members.iter().enumerate() {
-        // A small piece beside a denser curve; a larger one only when it is a cloud of a
-        // few percent of that curve's points.
-        let small = group.len() < MIN_LOOP_POINTS;
-        let mut cloud = None;
-        let beside_denser_curve = group.iter().flat_map(|&v| neighbours(v)).any(|w| {
-            let other = piece[w as usize] as usize;
-            let denser = members[other].len() >= MIN_LOOP_POINTS
-                && median[id] >= LONG_EDGE_RATIO * median[other];
-            denser
-                && (small
-                    || (group.len() * CLOUD_FRACTION <= members[other].len()
-                        && *cloud.get_or_insert_with(|| is_cloud(dt, group))))
-        });
-        if beside_denser_curve {
-            isolated.push(group.clone()); // ascending, as the pieces are
+    // The pieces beside each piece (sharing a Delaunay edge), each once.
+    let beside: Vec<Vec<usize>> = members
+        .iter()
+        .enumerate()
+        .map(|(id, group)| {
+            let mut others: Vec<usize> = group
+                .iter()
+                .flat_map(|&v| neighbours(v))
+                .map(|w| piece[w as usize] as usize)
+                .filter(|&other| other != id)
+                .collect();
+            others.sort_unstable();
+            others.dedup();
+            others
+        })
+        .collect();
+    let curve = |id: usize| members[id].len() >= MIN_LOOP_POINTS;
+    let mut isolated: Vec<bool> = (0..members.len())
+        .map(|id| {
+            // A small piece beside a denser curve; a larger one only when it is a cloud of
+            // a few percent of the points of the denser curves beside it.
+            let denser = beside[id]
+                .iter()
+                .filter(|&&o| curve(o) && median[id] >= LONG_EDGE_RATIO * median[o]);
+            let curve_points: usize = denser.clone().map(|&o| members[o].len()).sum();
+            curve_points > 0
+                && (!curve(id)
+                    || (members[id].len() * CLOUD_FRACTION <= curve_points
+                        && is_cloud(dt, &members[id])))
+        })
+        .collect();
+    isolate_open_sea(&beside, &mut isolated, curve);
+    members.into_iter().zip(isolated).filter_map(|(group, out)| out.then_some(group)).collect()
+}
+
+/// Marks as isolated the small pieces that lie in a cloud of outliers with no curve beside
+/// them: each group of small pieces joined by Delaunay edges that is beside an isolated
+/// cloud (an isolated piece of at least [`MIN_LOOP_POINTS`] points) and beside no curve (a
+/// piece of at least [`MIN_LOOP_POINTS`] points) that is not isolated. Outliers scattered
+/// far from every curve link into pieces by their own spacing, and the small ones that are
+/// not beside a curve are only beside the rest of the cloud. (Small isolated pieces alone
+/// do not make a cloud: a glyph's long sides sampled by a few points each are small pieces
+/// beside one another, and are put back after the reading.)
+fn isolate_open_sea(beside: &[Vec<usize>], isolated: &mut [bool], curve: impl Fn(usize) -> bool) {
+    let open = |id: usize, isolated: &[bool]| !isolated[id] && !curve(id);
+    let mut seen = vec![false; beside.len()];
+    for start in 0..beside.len() {
+        if seen[start] || !open(start, isolated) {
+            continue;
+        }
+        // The group of small pieces joined to `start`, and whether anything but isolated
+        // pieces lies beside it.
+        let (mut group, mut stack) = (Vec::new(), vec![start]);
+        seen[start] = true;
+        let (mut anchored, mut in_cloud) = (false, false);
+        while let Some(id) = stack.pop() {
+            group.push(id);
+            for &other in &beside[id] {
+                if isolated[other] {
+                    in_cloud |= curve(other);
+                } else if open(other, isolated) {
+                    if !seen[other] {
+                        seen[other] = true;
+                        stack.push(other);
+                    }
+                } else {
+                    anchored = true; // a curve beside it
+                }
+            }
+        }
+        if in_cloud && !anchored {
+            for id in group {
+                isolated[id] = true;
+            }
         }
     }
-    isolated
 }
 
 /// The share of a piece's tree vertices at which u ≥ 2 beyond which the piece is a cloud
@@ -302,7 +360,12 @@ fn straight(dt: &Triangulation, x: u32, v: u32, y: u32) -> bool {
 }
 
 /// Whether an edge of `chain` crosses one of the `foreign` edges other than `skip` (exact).
-fn crosses(dt: &Triangulation, chain: &[u32], foreign: &[[u32; 2]], skip: [u32; 2]) -> bool {
+pub(super) fn crosses(
+    dt: &Triangulation,
+    chain: &[u32],
+    foreign: &[[u32; 2]],
+    skip: [u32; 2],
+) -> bool {
     chain.windows(2).any(|w| {
         let (p, q) = (dt.point(w[0]), dt.point(w[1]));
         foreign

@@ -30,9 +30,10 @@
 //!    A detour is the smaller part of its loop or path. The rest is read again; if that
 //!    gets sculpting stuck where the cut reading did not, the cut reading is kept.
 //!    **Isolated pieces** (`isolated`): fewer than seven points, or a scattered cloud of a
-//!    few percent of the points, sampled at least four times more coarsely than the curve
-//!    beside them, are left out before the first round's reading, and put back where the
-//!    reading runs straight past them, or stops on both sides, along Delaunay edges.
+//!    few percent of the points of the curves beside it, sampled at least four times more
+//!    coarsely than those curves, are left out before the first round's reading, with the small pieces
+//!    that lie in such a cloud beside no curve; they are put back where the reading runs
+//!    straight past them, or stops on both sides, along Delaunay edges.
 //! 5. **Good continuation** (`continuation`): 2-opt moves along Delaunay edges that lower
 //!    the reading's total turning while every new edge keeps `u < 2`, so that two curves
 //!    the graph merged (islands closer together than their spacing) come apart again.
@@ -47,6 +48,9 @@
 //!    something, or sculpting got stuck, the points are thinned to 2, 3 and 4 times their
 //!    spacing, read again, and every point threaded along the first coarse reading that
 //!    passes the check (`coarse_reading`): noise of up to a quarter of the spacing.
+//!    Last, the points left out as outliers that lie within half their spacing of an edge
+//!    of the result are put back into it (`skipped_samples`): the check's own rule says they
+//!    are samples.
 //!
 //! Points left out are listed in the result with the reason `outlier`; a result whose
 //! loops pass through every point that is not left out is a `polygon` or `polygons`.
@@ -85,6 +89,7 @@ mod isolated;
 mod outliers;
 mod reading;
 mod shorter_reading;
+mod skipped_samples;
 mod spanning_forests;
 mod spur_path;
 mod steps;
@@ -129,6 +134,16 @@ pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
 /// first when it passes the check.
 #[doc(hidden)]
 pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
+    let rec = checked_reading(dt, steps);
+    match steps.skipped_samples {
+        true => with_skipped_samples(dt, rec),
+        false => rec,
+    }
+}
+
+/// The reading, checked, with the wired-in outliers cut and the coarse reading where the
+/// check finds the curves broken (steps 11–13 of the module docs).
+fn checked_reading(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     let mut rec = read(dt, steps);
     rec.diagnosis = diagnose(dt, &rec);
     if steps.wired_outliers && rec.diagnosis.iter().any(|f| f.kind == FindingKind::DoublesBack) {
@@ -157,6 +172,38 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
         }
         None => rec,
     }
+}
+
+/// `rec` with the points it left out as outliers that lie within the sampling of its curves
+/// put back (`skipped_samples`), checked again; `rec` itself when there are none.
+fn with_skipped_samples(dt: &Triangulation, rec: Reconstruction) -> Reconstruction {
+    if !rec.diagnosis.iter().any(|f| f.kind == FindingKind::OutliersOnCurve) {
+        return rec;
+    }
+    let vertex_of = dt.vertex_of_inputs();
+    let reason_is = |reason| {
+        let of = rec.left_out.iter().filter(move |l| l.reason == reason);
+        of.map(|l| l.index)
+    };
+    let mut outliers: Vec<u32> = reason_is(LeftOutReason::Outlier).map(|i| vertex_of[i]).collect();
+    outliers.sort_unstable();
+    let pairs: Vec<[u32; 2]> =
+        rec.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
+    let mut reading = Reading::new(dt, &pairs);
+    let back = skipped_samples::put_back_skipped(&mut reading, &outliers);
+    if back.is_empty() {
+        return rec;
+    }
+    outliers.retain(|v| back.binary_search(v).is_err());
+    let inside: Vec<usize> = reason_is(LeftOutReason::Inside).collect();
+    let mut with_back = finish(dt, reading.pairs(), inside, &outliers, rec.stats);
+    // Putting a sample back does not straighten a zigzag elsewhere.
+    let readable = matches!(with_back.status, Status::Polygon | Status::Polygons | Status::Curves);
+    if rec.status == Status::Noisy && readable {
+        with_back.status = Status::Noisy;
+    }
+    with_back.diagnosis = diagnose(dt, &with_back);
+    with_back
 }
 
 /// Whether `findings` say the reading's curves break the sampling condition by enough to
@@ -603,29 +650,56 @@ mod tests {
         assert_eq!(rec.loops.len(), 2, "{:?}", rec.loops);
     }
 
+    /// The points and true edges of a case of `data/`, read at compile time.
+    fn labelled(xy: &str, gt: &str) -> (Vec<Point>, Vec<(usize, usize)>) {
+        let numbers = |text: &str| -> Vec<Vec<f64>> {
+            let row = |line: &str| line.split_whitespace().map(|x| x.parse().unwrap()).collect();
+            text.lines().filter(|l| !l.trim().is_empty()).map(row).collect()
+        };
+        let points = numbers(xy).iter().map(|p| [p[0], p[1]]).collect();
+        let edge = |e: &Vec<f64>| (e[0].min(e[1]) as usize, e[0].max(e[1]) as usize);
+        let mut truth: Vec<_> = numbers(gt).iter().map(edge).collect();
+        truth.sort_unstable();
+        (points, truth)
+    }
+
+    fn sorted_edges(rec: &Reconstruction) -> Vec<(usize, usize)> {
+        let mut found: Vec<_> = rec.edges.iter().map(|&[a, b]| (a.min(b), a.max(b))).collect();
+        found.sort_unstable();
+        found
+    }
+
+    #[test]
+    fn outliers_scattered_between_small_islands_are_all_left_out() {
+        // Thirteen islands of 7 to 186 points and 36 outliers in the sea between them. The
+        // outliers link into pieces by their own spacing: a cloud of 13 beside eight islands
+        // (a twentieth of their points together, not of any one), and pieces of two beside
+        // nothing but the cloud. Before, they were wired into polygons across the sea.
+        let (points, truth) = labelled(
+            include_str!("../../../../data/outlines/gshhs_arch_dalmatia_smooth_outliers.xy"),
+            include_str!("../../../../data/outlines/gshhs_arch_dalmatia_smooth_outliers.gt"),
+        );
+        let rec = run(&points);
+        let on_curve: std::collections::HashSet<usize> =
+            truth.iter().flat_map(|&(a, b)| [a, b]).collect();
+        let outliers: Vec<usize> = (0..points.len()).filter(|i| !on_curve.contains(i)).collect();
+        let left_out: Vec<usize> = rec.left_out.iter().map(|l| l.index).collect();
+        assert_eq!(left_out, outliers);
+        assert_eq!(sorted_edges(&rec), truth);
+        assert!(!rec.warns(), "{:?}", rec.diagnosis);
+    }
+
     #[test]
     fn a_neck_a_spacing_wide_is_not_cut() {
         // A noisy glyph (ψ) whose arm meets the stem at a neck about one spacing wide: cutting
         // across it would make two loops that each keep a corner at the cut, for a gain smaller
         // than one sampled turn. SIG-CONNECT2D reads it right, and so must SIG-AUTO.
-        let numbers = |text: &str| -> Vec<Vec<f64>> {
-            let row = |line: &str| line.split_whitespace().map(|x| x.parse().unwrap()).collect();
-            text.lines().map(row).collect()
-        };
-        let points: Vec<Point> =
-            numbers(include_str!("../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.xy"))
-                .iter()
-                .map(|p| [p[0], p[1]])
-                .collect();
-        let truth =
-            numbers(include_str!("../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.gt"));
+        let (points, truth) = labelled(
+            include_str!("../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.xy"),
+            include_str!("../../../../data/curves/noisy_DejaVuSans-Oblique_U03C8_c0.gt"),
+        );
         let rec = run(&points);
         assert_eq!(rec.loops.len(), 1, "{:?}", rec.loops);
-        let edge = |a: f64, b: f64| (a.min(b) as usize, a.max(b) as usize);
-        let mut expected: Vec<_> = truth.iter().map(|e| edge(e[0], e[1])).collect();
-        let mut found: Vec<_> = rec.edges.iter().map(|&[a, b]| (a.min(b), a.max(b))).collect();
-        expected.sort_unstable();
-        found.sort_unstable();
-        assert_eq!(found, expected);
+        assert_eq!(sorted_edges(&rec), truth);
     }
 }

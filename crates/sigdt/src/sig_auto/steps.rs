@@ -36,6 +36,9 @@ pub struct Steps {
     pub coarse: bool,
     /// Leave out the points where the reading doubles back (`wired_outliers`).
     pub wired_outliers: bool,
+    /// Put back the outliers that lie within the sampling of the result's curves
+    /// (`skipped_samples`).
+    pub skipped_samples: bool,
 }
 
 impl Default for Steps {
@@ -52,6 +55,7 @@ impl Default for Steps {
             own_curves: true,
             coarse: true,
             wired_outliers: true,
+            skipped_samples: true,
         }
     }
 }
