@@ -34,7 +34,7 @@ demo: build
 	@$(SIGDT) reconstruct data/inputs/$(DEMO).xy -o out/$(DEMO).loops
 	@$(SIGDT) render data/inputs/$(DEMO).xy --gt data/inputs/$(DEMO).gt -o out/$(DEMO).svg
 	@$(SIGDT) render data/inputs/$(DEMO).xy --gt data/inputs/$(DEMO).gt -o out/$(DEMO).png
-	@$(SIGDT) view data/inputs/glyph_e_reversed.xy --gt data/inputs/glyph_e_reversed.gt \
+	@$(SIGDT) view data/inputs/glyph_e_reversed.xy --gt data/inputs/glyph_e_reversed.gt --method sig-connect2d \
 	  -o out/glyph_e_reversed.html
 	@if cmp -s out/$(DEMO).edges data/inputs/$(DEMO).gt; then \
 	  echo "ground truth: exact ($$(wc -l < out/$(DEMO).edges) edges equal data/inputs/$(DEMO).gt)"; \

@@ -66,7 +66,7 @@ __all__ = ["proximity_graph", "read_points", "reconstruct", "reconstruct_many"]
 def reconstruct(
     points: Any,
     *,
-    method: Method = "sig-connect2d",
+    method: Method = "sig-auto",
     leaf_elimination: bool = LEAF_ELIMINATION,
 ) -> Reconstruction:
     """Reconstruct the closed curve(s) through a set of 2D points.
@@ -83,12 +83,15 @@ def reconstruct(
         (longitude/latitude) is reconstructed in a plane centred on the points
         (azimuthal equidistant), where distances are lengths on the ground; the result's
         coordinates stay in degrees.
-    method : str, default "sig-connect2d"
-        The reconstruction method (see ``sigdt.METHODS``). ``"sig-auto"`` keeps open
-        curves open and nested curves separate: closed loops in ``loops``, open curves in
-        ``paths`` (docs/sig-auto.md).
+    method : str, default "sig-auto"
+        The reconstruction method (see ``sigdt.METHODS``). The default, ``"sig-auto"``,
+        keeps open curves open and nested curves separate (closed loops in ``loops``, open
+        curves in ``paths``), leaves outliers out and reads noise at a coarser scale
+        (docs/sig-auto.md). ``"sig-connect2d"`` is the paper's method: closed polygons
+        through every point.
     leaf_elimination : bool, default True
-        Give every SIGDT leaf its shortest missing Delaunay edge before inflating.
+        Give every SIGDT leaf its shortest missing Delaunay edge before inflating
+        (SIG-CONNECT2D only: ``False`` with another method is a ``ValueError``).
 
     Returns
     -------
@@ -131,7 +134,7 @@ def reconstruct(
     >>> rec.loops
     [array([0, 1, 2, 3])]
     """
-    _check_method(method)
+    _check_method(method, leaf_elimination)
     array, index, crs = _as_points_and_index(points)
     fields = _core.reconstruct(array, method, bool(leaf_elimination), _is_geographic(crs))
     rec = Reconstruction(array, fields, index, crs)
@@ -143,7 +146,7 @@ def reconstruct_many(
     point_sets: Iterable[object],
     *,
     n_jobs: int | None = None,
-    method: Method = "sig-connect2d",
+    method: Method = "sig-auto",
     leaf_elimination: bool = LEAF_ELIMINATION,
 ) -> list[Reconstruction]:
     """Reconstruct many point sets in parallel (threads in Rust, the GIL released).
@@ -185,7 +188,7 @@ def reconstruct_many(
     >>> [r.status for r in sigdt.reconstruct_many([square, square[:2]])]
     ['polygon', 'too-few-points']
     """
-    _check_method(method)
+    _check_method(method, leaf_elimination)
     n_jobs = _threads(n_jobs)
     arrays = []
     for k, p in enumerate(point_sets):

@@ -138,8 +138,14 @@ def _as_points(points: Any) -> np.ndarray:
     return array
 
 
-def _check_method(method: str) -> None:
+def _check_method(method: str, leaf_elimination: bool = LEAF_ELIMINATION) -> None:
     if not isinstance(method, str):
         raise TypeError(f"method must be a str, got {type(method).__name__}")
     if method not in _core.METHODS:
         raise ValueError(f"unknown method {method!r} (expected one of: {', '.join(_core.METHODS)})")
+    if not leaf_elimination and method != "sig-connect2d":
+        # An option without effect would hide that another method ran than the one meant.
+        raise ValueError(
+            f"leaf_elimination=False applies to method='sig-connect2d' only; {method!r} does "
+            "not use it"
+        )

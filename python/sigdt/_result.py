@@ -205,7 +205,7 @@ class Reconstruction:
         >>> import numpy as np, sigdt
         >>> t = np.linspace(0, 2 * np.pi, 40, endpoint=False)
         >>> circle = np.c_[np.cos(t), np.sin(t)]
-        >>> rec = sigdt.reconstruct(np.r_[3 * circle, circle], method="sig-auto")
+        >>> rec = sigdt.reconstruct(np.r_[3 * circle, circle])
         >>> len(rec.loops), rec.polygons
         (2, [(0, [1])])
         """
@@ -248,7 +248,7 @@ class Reconstruction:
 
         >>> import sigdt
         >>> sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]]).to_geojson()["properties"]
-        {'status': 'polygon', 'status_message': 'one closed polygon through every point not left out', 'method': 'sig-connect2d', 'points': 4, 'edges': 4, 'loops': 1, 'paths': 0, 'duplicates': 0, 'warning': False}
+        {'status': 'polygon', 'status_message': 'one closed polygon through every point not left out', 'method': 'sig-auto', 'points': 4, 'edges': 4, 'loops': 1, 'paths': 0, 'duplicates': 0, 'warning': False}
         """
         from .shapely import to_geojson
 

@@ -73,7 +73,7 @@ def trace(
     >>> sigdt.trace(points, method="crust") is None
     True
     """
-    _check_method(method)
+    _check_method(method, leaf_elimination)
     array = _as_points(points)
     recorded = _core.trace(array, method, bool(leaf_elimination))
     return None if recorded is None else Trace(array, recorded)

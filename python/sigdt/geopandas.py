@@ -106,7 +106,7 @@ def reconstruct_frame(
     frame: Any,
     by: Hashable | Sequence[Hashable] | None = None,
     *,
-    method: Method = "sig-connect2d",
+    method: Method = "sig-auto",
     leaf_elimination: bool = LEAF_ELIMINATION,
     n_jobs: int | None = None,
     progress: bool | None = None,
@@ -166,7 +166,7 @@ def reconstruct_frame(
     import geopandas as gpd
     import pandas as pd
 
-    _check_method(method)
+    _check_method(method, leaf_elimination)
     threads = _threads(n_jobs)
     if type(frame).__name__ not in ("GeoDataFrame", "GeoSeries"):
         raise TypeError(

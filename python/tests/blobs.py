@@ -131,15 +131,18 @@ def check_result(points: np.ndarray, rec: sigdt.Reconstruction) -> None:
     assert np.array_equal(from_chains, edges), "loops/paths disagree with edges"
 
     degree = np.bincount(edges.ravel(), minlength=n)
+    assert np.all(degree[rec.left_out] == 0), "a point left out has an edge"
+    reasons = set(rec.left_out_reasons)
     if rec.is_manifold:
-        assert len(rec.left_out) == 0 and not rec.paths
-        assert np.all(degree[distinct] == 2), "a distinct point is not on exactly one loop"
+        # Loops through every distinct point but the outliers left out (SIG-AUTO).
+        assert reasons <= {"outlier"} and not rec.paths
+        on_loops = np.setdiff1d(distinct, rec.left_out)
+        assert np.all(degree[on_loops] == 2), "a distinct point is not on exactly one loop"
         assert (len(rec.loops) == 1) == (rec.status == "polygon")
     if rec.status == "sculpting-stuck":
-        assert len(rec.left_out) > 0
-        assert np.all(degree[rec.left_out] == 0)
+        assert "inside" in reasons
     else:
-        assert len(rec.left_out) == 0
+        assert "inside" not in reasons
     if rec.status == "too-few-points":
         assert len(distinct) < 3 and len(edges) == max(len(distinct) - 1, 0)
     if rec.status == "collinear":

@@ -212,6 +212,17 @@ def test_unknown_method_and_non_str_method():
         sigdt.reconstruct(SQUARE, "sig-connect2d")  # options are keyword-only
 
 
+def test_the_default_method_is_sig_auto_and_leaf_elimination_needs_sig_connect2d():
+    assert sigdt.reconstruct(SQUARE).method == "sig-auto"
+    assert sigdt.reconstruct_many([SQUARE])[0].method == "sig-auto"
+    rec = sigdt.reconstruct(SQUARE, method="sig-connect2d", leaf_elimination=False)
+    assert rec.method == "sig-connect2d"
+    # Without the method, the option would be dropped without a word.
+    for call in (sigdt.reconstruct, lambda p, **kw: sigdt.reconstruct_many([p], **kw)):
+        with pytest.raises(ValueError, match="applies to method='sig-connect2d' only"):
+            call(SQUARE, leaf_elimination=False)
+
+
 @pytest.mark.parametrize(
     ("kwargs", "message"),
     [
@@ -364,7 +375,7 @@ def test_reconstruct_many_equals_the_serial_loop(varied_sets, n_jobs):
 
 
 def test_reconstruct_many_options_and_inputs(varied_sets):
-    options = {"leaf_elimination": False}
+    options = {"method": "sig-connect2d", "leaf_elimination": False}
     lists = [p.tolist() for p in varied_sets[:40]]
     many = sigdt.reconstruct_many(iter(lists), n_jobs=2, **options)
     assert many == [sigdt.reconstruct(p, **options) for p in lists]

@@ -120,7 +120,7 @@ def test_cli_geopackage_layers_read_back_with_their_crs(
     assert curves[["kind", "method", "status", "warning", "vertices"]].to_dict("records") == [
         {
             "kind": "polygon",
-            "method": "sig-connect2d",
+            "method": "sig-auto",
             "status": "polygon",
             "warning": False,
             "vertices": 245,

@@ -55,7 +55,8 @@ def test_one_large_reconstruction_is_interrupted_promptly():
     points = spiral(1_500_000)  # seconds of work
     latency = interrupted_after(0.3, lambda: sigdt.reconstruct(points, method="sig-auto"))
     assert latency < 2.0, f"KeyboardInterrupt {latency:.2f} s after the signal"
-    assert sigdt.reconstruct(points[:1000]).status in ("polygon", "polygons", "sculpting-stuck")
+    # The first thousand points are an open piece of the spiral.
+    assert sigdt.reconstruct(points[:1000]).status == "curves"
 
 
 def test_evaluate_is_interrupted_promptly():

@@ -50,7 +50,7 @@ def on_a_terminal(args: list) -> tuple[int, str]:
             [
                 "reading",
                 "triangulating 70 points",
-                "reconstructing (sig-connect2d)",
+                "reconstructing (sig-auto)",
                 "proximity graphs",
                 "encoding the page",
                 "writing",
@@ -62,7 +62,7 @@ def on_a_terminal(args: list) -> tuple[int, str]:
             [
                 "reading",
                 "triangulating 70 points",
-                "reconstructing (sig-connect2d)",
+                "reconstructing (sig-auto)",
                 "drawing",
                 "rasterising",
                 "writing",

@@ -57,10 +57,12 @@ def test_dense_blob_is_reconstructed_exactly(sample, seed):
     sigdt_set = {tuple(e) for e in relabel(sigdt_edges, order).tolist()}
     assert {tuple(e) for e in expected.tolist()} <= sigdt_set, "a curve edge is not in SIGDT"
     for leaf_elimination in (True, False):
-        rec = sigdt.reconstruct(points, leaf_elimination=leaf_elimination)
+        rec = sigdt.reconstruct(points, method="sig-connect2d", leaf_elimination=leaf_elimination)
         check_result(points, rec)
         assert rec.status == "polygon"
         assert np.array_equal(relabel(rec.edges, order), expected), leaf_elimination
+    rec = sigdt.reconstruct(points)  # SIG-AUTO
+    assert rec.status == "polygon" and np.array_equal(relabel(rec.edges, order), expected)
 
 
 @settings(max_examples=150, **SETTINGS)
@@ -105,13 +107,18 @@ def _clouds():
 
 
 @settings(max_examples=500, **SETTINGS)
-@given(_clouds(), st.booleans())
-def test_output_invariants_on_arbitrary_clouds(points, leaf_elimination):
-    rec = sigdt.reconstruct(points, leaf_elimination=leaf_elimination)
+@given(
+    _clouds(),
+    st.sampled_from([("sig-auto", True), ("sig-connect2d", True), ("sig-connect2d", False)]),
+)
+def test_output_invariants_on_arbitrary_clouds(points, options):
+    method, leaf_elimination = options
+    rec = sigdt.reconstruct(points, method=method, leaf_elimination=leaf_elimination)
     check_result(points, rec)
     assert rec.stats["points"] == len(points)
+    again = sigdt.reconstruct(points.copy(), method=method, leaf_elimination=leaf_elimination)
     assert rec.stats["distinct_points"] == len(points) - len(rec.duplicates)
-    assert rec == sigdt.reconstruct(points.copy(), leaf_elimination=leaf_elimination)
+    assert rec == again
 
 
 @settings(max_examples=200, **SETTINGS)

@@ -76,7 +76,7 @@ def test_boundary_at_start_is_the_boundary_of_the_graph():
     assert {tuple(e) for e in start} <= {tuple(e) for e in tr.graph}
     assert len(start) == 12 and tr.initial_inside.all()
     end = tr.boundary_at(1)
-    assert np.array_equal(end, sigdt.reconstruct(FIGURE_7).edges)
+    assert np.array_equal(end, sigdt.reconstruct(FIGURE_7, method="sig-connect2d").edges)
     assert not tr.inside_at(1)[tr.step_triangle[0]]
 
 

@@ -89,12 +89,14 @@ Exit status: 0 on success (degenerate input included), 1 on an error (one line
 'sigdt: <message>' on stderr), 2 on a usage error. Output files are written to a temporary
 file and renamed into place, so a failed run never leaves a partial or truncated OUT.";
 
-/// Reconstruct curves (polygons) from unorganised 2D points with SIG-CONNECT2D.
+/// Reconstruct curves (polygons and open paths) from unorganised 2D points.
 ///
 /// SIG-CONNECT2D (Marin, Ohrhallinger, Wimmer: "SIGDT: 2D Curve Reconstruction", Pacific
 /// Graphics 2022) intersects the spheres-of-influence graph with the Delaunay triangulation,
-/// then inflates and sculpts its boundary into polygons that interpolate every point. It has
-/// no parameters.
+/// then inflates and sculpts its boundary into polygons that interpolate every point. The
+/// default method, SIG-AUTO, reads the same graph per component: open curves stay open,
+/// nested curves separate, outliers are left out and noise is read at a coarser scale
+/// (`--method sig-connect2d` for the paper's method). Neither has parameters.
 #[derive(Debug, Parser)]
 #[command(name = "sigdt", version, propagate_version = true)]
 #[command(after_help = format!("{INPUT_FORMATS}\n\n{STATUSES}\n\n{EXIT_STATUS}"))]

@@ -114,7 +114,8 @@ fn log_correlation(pairs: &[(f64, f64)]) -> f64 {
 fn time_metrics(dir: &std::path::Path, name: &str) -> Result<(), Box<dyn std::error::Error>> {
     let points = sigdt::io::read_points(&dir.join(format!("{name}.xy")))?;
     let gt = sigdt::io::read_edges(&dir.join(format!("{name}.gt")))?;
-    let rec = sigdt::reconstruct(&points, &sigdt::Options::default())?;
+    let options = sigdt::Options { method: sigdt::Method::SigConnect2d, ..Default::default() };
+    let rec = sigdt::reconstruct(&points, &options)?;
     let t = Instant::now();
     let d = distance_errors(&points, &rec.edges, &gt)?;
     let td = t.elapsed();

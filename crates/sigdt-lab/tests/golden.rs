@@ -194,7 +194,7 @@ fn check_golden(run: &Run, folder: &str, name: &str) {
 fn runs() -> Vec<(String, Options)> {
     let mut runs = vec![(
         "sig-connect2d-no-leaf-elimination".to_string(),
-        Options { leaf_elimination: false, ..Options::default() },
+        Options { method: Method::SigConnect2d, leaf_elimination: false },
     )];
     for &method in Method::ALL {
         runs.push((method.to_string(), Options { method, ..Options::default() }));

@@ -9,7 +9,7 @@ fn main() {
     let n: usize = args.next().and_then(|s| s.parse().ok()).unwrap_or(260);
     let samples: Vec<_> =
         (0..sets).map(|s| sigdt::samplers::random_closed_curve(s, n).shuffled(s)).collect();
-    let options = sigdt::Options::default();
+    let options = sigdt::Options { method: sigdt::Method::SigConnect2d, ..Default::default() };
     let rounds: u64 = args.next().and_then(|s| s.parse().ok()).unwrap_or(3);
     for round in 0..rounds {
         let start = Instant::now();

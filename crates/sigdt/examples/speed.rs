@@ -43,7 +43,7 @@
 //! and the page's size) and `sigdt render FILE -o PICTURE.png`, each with `T` threads.
 use rayon::{ThreadPool, ThreadPoolBuilder};
 use sigdt::samplers::{random_closed_curve, spiral_band, Sample};
-use sigdt::{Options, Point, Triangulation};
+use sigdt::{Method, Options, Point, Triangulation};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::error::Error;
 use std::hint::black_box;
@@ -168,7 +168,7 @@ fn measure(
     cgal: Option<(&Path, &Path)>,
 ) -> Res<Measured> {
     let points = &sample.points[..];
-    let options = Options::default();
+    let options = Options { method: Method::SigConnect2d, ..Options::default() };
     let delaunay = || one.install(|| time(|| Triangulation::new(points)));
     let total = |pool: &ThreadPool| pool.install(|| time(|| sigdt::reconstruct(points, &options)));
     // Warm-up: also checks the output and sizes the number of repetitions.
@@ -307,7 +307,7 @@ fn median(values: &mut [f64]) -> f64 {
 /// Peak heap bytes of one `reconstruct` run on `points`, beyond what was allocated before
 /// the call (the input points are excluded; the returned result is included).
 fn peak_memory(points: &[Point]) -> sigdt::Result<usize> {
-    let options = Options::default();
+    let options = Options { method: Method::SigConnect2d, ..Options::default() };
     let baseline = CURRENT.load(Ordering::SeqCst);
     PEAK.store(baseline, Ordering::SeqCst);
     let rec = black_box(sigdt::reconstruct(points, &options)?);

@@ -16,18 +16,25 @@ use crate::result::{degenerate_result, diagnose, from_vertex_pairs, Reconstructi
 use crate::{sig_auto, sig_connect2d};
 
 /// A reconstruction method. Spelled in kebab case on the command line and in Python
-/// (`"sig-connect2d"`); [`FromStr`] and [`Display`](fmt::Display) map between the two.
+/// (`"sig-auto"`); [`FromStr`] and [`Display`](fmt::Display) map between the two.
+///
+/// The default is SIG-AUTO: on data of unknown kind (open, several or nested curves,
+/// noise, outliers) it gives the right curves where SIG-CONNECT2D, which returns closed
+/// polygons through every point, cannot, and it loses nothing SIG-CONNECT2D reconstructs
+/// within the paper's sampling condition (`docs/sig-auto.md`). SIG-CONNECT2D, the paper's
+/// method, is one option away.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 #[non_exhaustive]
 pub enum Method {
-    /// SIG-CONNECT2D [MOW22](https://doi.org/10.1111/cgf.14654): SIGDT, then CONNECT2D's
-    /// inflating and sculpting.
-    #[default]
+    /// SIG-CONNECT2D [MOW22](https://doi.org/10.1111/cgf.14654), the paper's method: SIGDT,
+    /// then CONNECT2D's inflating and sculpting into closed polygons through every point.
     SigConnect2d,
-    /// SIG-AUTO (ours, after [MOW22](https://doi.org/10.1111/cgf.14654)'s future work):
-    /// SIGDT2 per component; components whose spanning tree is a path are joined and closed
-    /// only where the gap is at most twice their longest edge, the rest is inflated and
-    /// sculpted on its own. Returns closed loops and open paths. Ignores `leaf_elimination`.
+    /// SIG-AUTO (ours, after [MOW22](https://doi.org/10.1111/cgf.14654)'s future work), the
+    /// default: SIGDT2 per component; components whose spanning tree is a path are joined
+    /// and closed only where the gap is at most twice their longest edge, the rest is
+    /// inflated and sculpted on its own; outliers are left out and noise read at a coarser
+    /// scale. Returns closed loops and open paths. Ignores `leaf_elimination`.
+    #[default]
     SigAuto,
     /// CONNECT2D [OM13](https://doi.org/10.1111/cgf.12227): the same inflating and sculpting
     /// started from BC₀ (EMST plus leaf edges). Ignores `leaf_elimination`.
@@ -135,7 +142,7 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Options { method: Method::SigConnect2d, leaf_elimination: true }
+        Options { method: Method::default(), leaf_elimination: true }
     }
 }
 

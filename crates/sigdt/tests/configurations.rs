@@ -4,7 +4,7 @@
 use sigdt::internals::check_reconstruction;
 use sigdt::internals::{inflate, sculpt, Boundary, EdgeMask, VertexClass};
 use sigdt::Triangulation;
-use sigdt::{reconstruct, Options, Point, Stats, Status};
+use sigdt::{reconstruct, Method, Options, Point, Stats, Status};
 
 /// The edge mask of the given input-index pairs (each must be a Delaunay edge).
 fn mask(dt: &Triangulation, pairs: &[[usize; 2]]) -> EdgeMask {
@@ -33,7 +33,9 @@ fn circle(k: usize, centre: Point, r: f64) -> Vec<Point> {
 }
 
 fn run(points: &[Point]) -> sigdt::Reconstruction {
-    let rec = reconstruct(points, &Options::default()).unwrap();
+    // The paper's figures are of SIG-CONNECT2D.
+    let rec = reconstruct(points, &Options { method: Method::SigConnect2d, ..Options::default() })
+        .unwrap();
     check_reconstruction(points, &rec).unwrap();
     rec
 }

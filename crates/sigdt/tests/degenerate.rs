@@ -613,7 +613,8 @@ fn subnormal_coordinates() {
 fn ten_million_points() {
     let s = random_closed_curve(1, 10_000_000).shuffled(7);
     let start = Instant::now();
-    let rec = reconstruct(&s.points, &Options::default()).unwrap();
+    let options = Options { method: Method::SigConnect2d, ..Options::default() };
+    let rec = reconstruct(&s.points, &options).unwrap();
     eprintln!("10^7 points: {:.2} s", start.elapsed().as_secs_f64());
     assert_eq!(rec.status, Status::Polygon);
     assert!(rec.edges == s.edges, "not the ground-truth polygon");

@@ -53,7 +53,7 @@ fn inputs() -> Vec<(String, Vec<Point>)> {
 
 fn options() -> Vec<Options> {
     vec![
-        Options::default(),
+        sig_connect2d(),
         Options { method: Method::SigConnect2d, leaf_elimination: false },
         Options { method: Method::Connect2d, leaf_elimination: true },
     ]
@@ -157,7 +157,7 @@ fn steps_match_the_statistics_and_change_a_label_each() {
 fn some_inputs_exercise_every_phase() {
     let mut seen = [false; 3];
     for (_, points) in inputs() {
-        let (_, trace) = traced(&points, &Options::default());
+        let (_, trace) = traced(&points, &sig_connect2d());
         for s in &trace.steps {
             seen[Phase::ALL.iter().position(|&p| p == s.phase).unwrap()] = true;
         }
@@ -176,20 +176,25 @@ fn graph_filters_and_degenerate_input_have_no_trace() {
         assert_eq!(trace.is_some(), inflates, "{method}");
     }
     for points in [vec![], vec![[0.0, 0.0], [1.0, 1.0]], vec![[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]] {
-        let (rec, trace) = reconstruct_traced(&points, &Options::default()).unwrap();
-        assert_eq!(rec, reconstruct(&points, &Options::default()).unwrap());
+        let (rec, trace) = reconstruct_traced(&points, &sig_connect2d()).unwrap();
+        assert_eq!(rec, reconstruct(&points, &sig_connect2d()).unwrap());
         assert!(trace.is_none());
     }
-    assert!(reconstruct_traced(&[[f64::NAN, 0.0]], &Options::default()).is_err());
+    assert!(reconstruct_traced(&[[f64::NAN, 0.0]], &sig_connect2d()).is_err());
 }
 
 #[test]
 fn trace_fixed_part_describes_the_start() {
     let points = circle(12, [0.0, 0.0], 1.0);
-    let (rec, trace) = traced(&points, &Options::default());
+    let (rec, trace) = traced(&points, &sig_connect2d());
     assert_eq!(trace.triangles.len(), 10, "a convex 12-gon has 10 triangles");
     assert!(trace.initial_inside.iter().all(|&i| i), "SIGDT is the 12-gon: all interior");
     assert!(rec.edges.iter().all(|e| trace.graph.binary_search(e).is_ok()), "G ⊇ the polygon");
     assert_eq!(trace.steps.len(), 0);
     assert_eq!(trace.boundary_at(0), rec.edges);
+}
+
+/// SIG-CONNECT2D, the method whose steps a trace records (the default, SIG-AUTO, has none).
+fn sig_connect2d() -> Options {
+    Options { method: Method::SigConnect2d, ..Options::default() }
 }

@@ -32,7 +32,7 @@ pub struct ReconstructArgs {
           default_value_t = Method::default())]
     pub method: Method,
     /// Do not give SIGDT leaves their shortest missing Delaunay edge before inflating
-    /// (leaf elimination, SIGDT2, is on by default).
+    /// (leaf elimination, SIGDT2, is on by default; with --method sig-connect2d only).
     #[arg(long)]
     pub no_leaf_elimination: bool,
     /// GeoJSON output of points in a projected coordinate system: write them with the
@@ -70,6 +70,20 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
             }
         },
     };
+    if args.no_leaf_elimination && args.method != Method::SigConnect2d {
+        // Dropping the flag without a word would hide that another method ran than the one
+        // meant (SIG-CONNECT2D was the default before SIG-AUTO).
+        return Err(UsageError {
+            command: "reconstruct",
+            kind: clap::error::ErrorKind::ArgumentConflict,
+            message: format!(
+                "--no-leaf-elimination applies to sig-connect2d only (give --method \
+                 sig-connect2d); {} does not use it",
+                args.method
+            ),
+        }
+        .into());
+    }
     let read = input.points_and_how(&args.input)?;
     let (mut points, read_as, crs) = (read.points, read.how, read.crs);
     if let (OutputFormat::Text(TextFormat::GeoJson), Some(crs)) = (format, &crs) {
@@ -171,12 +185,12 @@ fn left_out_summary(rec: &Reconstruction) -> String {
 fn summary(options: &Options, rec: &Reconstruction, ms: f64, read_as: &str) {
     let s = &rec.stats;
     let method = match options.method {
-        // CONNECT2D always adds leaf edges to its BC0; the option applies to SIGDT only.
-        Method::Connect2d => options.method.to_string(),
-        _ => {
+        // The option applies to SIG-CONNECT2D only.
+        Method::SigConnect2d => {
             let leaves = if options.leaf_elimination { "on" } else { "off" };
             format!("{} (leaf elimination {leaves})", options.method)
         }
+        _ => options.method.to_string(),
     };
     let lines = [
         format!("method:                    {method}"),

@@ -49,7 +49,8 @@ pub struct RenderArgs {
     /// Ground-truth edges ('i j' per line, indices into INPUT).
     #[arg(long, value_name = "FILE")]
     pub gt: Option<PathBuf>,
-    /// Reconstruction method for the result and boundary layers.
+    /// Reconstruction method for the result and boundary layers (the boundary layer needs
+    /// sig-connect2d or connect2d).
     #[arg(long, value_name = "METHOD", value_parser = crate::methods::parser(),
           default_value_t = Method::default())]
     pub method: Method,
@@ -136,7 +137,11 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     };
     let boundary = match (has(Layer::Boundary), &trace) {
         (true, Some(t)) => Some(t.boundary_at(t.inflated_at)),
-        (true, None) => bail!("--layers boundary: method {} has no inflating step", args.method),
+        (true, None) => bail!(
+            "--layers boundary: method {} has no inflating step of its own to draw (sig-connect2d \
+             and connect2d have: --method sig-connect2d)",
+            args.method
+        ),
         (false, _) => None,
     };
     let layers = Layers {

@@ -25,7 +25,7 @@ pub struct ViewArgs {
     /// Ground-truth edges ('i j' per line, indices into INPUT).
     #[arg(long, value_name = "FILE")]
     pub gt: Option<PathBuf>,
-    /// Reconstruction method (sig-connect2d and connect2d record their steps).
+    /// Reconstruction method (sig-connect2d and connect2d record their steps, for the replay).
     #[arg(long, value_name = "METHOD", value_parser = crate::methods::parser(),
           default_value_t = Method::default())]
     pub method: Method,

@@ -94,7 +94,7 @@ fn geojson_output_is_longitude_and_latitude_only() {
     let run = sigdt(&["reconstruct", arg(&gis("sigma_4326.gpkg")), "--format", "geojson"]);
     assert!(run.ok().stdout.starts_with(r#"{"type": "Feature", "geometry": {"type": "Polygon""#));
     // The properties say which method made the result and what its status means.
-    let method = r#""status": "polygon", "status_message": "one closed polygon through every point not left out", "method": "sig-connect2d", "points": 245"#;
+    let method = r#""status": "polygon", "status_message": "one closed polygon through every point not left out", "method": "sig-auto", "points": 245"#;
     assert!(run.stdout.contains(method), "{run}");
 }
 

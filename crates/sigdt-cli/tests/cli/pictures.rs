@@ -14,6 +14,10 @@ fn render_writes_svg_and_png_with_the_layers_asked_for() {
     let (xy, gt) = (bundled("glyph_e_reversed.xy"), bundled("glyph_e_reversed.gt"));
     let args =
         ["render", &xy, "--gt", &gt, "--layers", "points,dt,sig,sigdt,sigdt2,boundary,result,gt"];
+    // The default method, SIG-AUTO, has no inflating step of its own to draw.
+    sigdt_in(dir.path(), &[&args[..], &["-o", "auto.svg"]].concat(), None)
+        .error(&["method sig-auto has no inflating step", "--method sig-connect2d"]);
+    let args = [&args[..], &["--method", "sig-connect2d"]].concat();
     sigdt_in(dir.path(), &[&args[..], &["-o", "all.svg"]].concat(), None).ok();
     let svg = fs::read_to_string(dir.path().join("all.svg")).unwrap();
     assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"), "{}", &svg[..80]);
@@ -57,7 +61,9 @@ fn render_and_view_errors_are_clear() {
 fn view_embeds_the_data_and_nothing_external() {
     let dir = tempdir();
     let xy = bundled("glyph_e_reversed.xy");
-    sigdt_in(dir.path(), &["view", &xy, "-o", "v.html"], None).ok();
+    // The replay of inflating and sculpting is SIG-CONNECT2D's.
+    let replay = ["view", &xy, "--method", "sig-connect2d", "-o", "v.html"];
+    sigdt_in(dir.path(), &replay, None).ok();
     let html = fs::read_to_string(dir.path().join("v.html")).unwrap();
     assert!(html.contains("glyph_e_reversed (70 points)") && html.contains("\"step_triangles\""));
     // The one address is the namespace of exported SVG pictures, which loads nothing.
@@ -68,8 +74,13 @@ fn view_embeds_the_data_and_nothing_external() {
     // A method without inflating or sculpting: no trace, still a page.
     sigdt_in(dir.path(), &["view", &xy, "--method", "peel", "-o", "p.html"], None).ok();
     assert!(fs::read_to_string(dir.path().join("p.html")).unwrap().contains("\"trace\": null"));
+    // The default method, SIG-AUTO, has no replay.
+    sigdt_in(dir.path(), &["view", &xy, "-o", "a.html"], None).ok();
+    let auto = fs::read_to_string(dir.path().join("a.html")).unwrap();
+    assert!(auto.contains("\"method\": \"sig-auto\"") && auto.contains("\"trace\": null"));
     // --no-steps leaves the replay out.
-    sigdt_in(dir.path(), &["view", &xy, "--no-steps", "-o", "n.html"], None).ok();
+    let without_steps = ["view", &xy, "--method", "sig-connect2d", "--no-steps", "-o", "n.html"];
+    sigdt_in(dir.path(), &without_steps, None).ok();
     let without = fs::read_to_string(dir.path().join("n.html")).unwrap();
     assert!(without.contains("\"trace\": null") && without.len() < html.len());
 }

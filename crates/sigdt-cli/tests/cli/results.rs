@@ -93,6 +93,12 @@ fn verbose_summary_goes_to_stderr() {
     );
     run.expect(0).stdout_is(&edges_text(&cycle_edges(12)));
     assert!(run.stderr.contains("leaf elimination off"), "{run}");
+    // The default method, SIG-AUTO, does not use the option: refused, not dropped.
+    let run = sigdt_in(dir.path(), &["reconstruct", "gon.xy", "--no-leaf-elimination"], None);
+    run.usage_error();
+    assert!(run.stderr.contains("applies to sig-connect2d only"), "{run}");
+    let run = sigdt_in(dir.path(), &["reconstruct", "gon.xy", "--verbose"], None);
+    assert!(run.expect(0).stderr.contains("method:                    sig-auto\n"), "{run}");
 }
 
 #[test]
