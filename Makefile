@@ -216,7 +216,8 @@ data-non-manifold:
 ## a win and a failure each (SIG-CONNECT2D and SIG-AUTO).
 OUTLINE_PICTURES := mp7_fork8_lfs030_clean mp7_spring11_lfs030_clean \
   pysal_us48_r1_k1_noise025 mp7_HCircle16_lfs030_noise025 \
-  gshhs_island247_smooth_outliers mp7_bat7_uni050_outliers mp7_elephant11_uni050_outliers
+  gshhs_island247_smooth_outliers mp7_bat7_uni050_outliers mp7_elephant11_uni050_outliers \
+  gshhs_arch_dalmatia_smooth_outliers
 REAL_WINS := mp7_octopus16_lfs030_out03 pysal_10740_r167_k1 mp7_Bone20_lfs030_noise0.002 \
   mp7_spring11_lfs030
 REAL_FAILURES := wdb_river6649_k1 gshhs_island81_k1 pysal_chicago77_r37_k1 \
@@ -226,8 +227,8 @@ REAL_FAILURES := wdb_river6649_k1 gshhs_island81_k1 pysal_chicago77_r37_k1 \
 pictures: build py-build
 	$(SIGDT) render data/inputs/$(DEMO).xy --gt data/inputs/$(DEMO).gt -o docs/images/demo.svg
 	$(SIGDT) render data/inputs/glyph_e_reversed.xy --gt data/inputs/glyph_e_reversed.gt \
-	  --layers points,sigdt,result -o docs/images/steps-sigdt.svg
-	$(SIGDT) render data/inputs/glyph_e_reversed.xy --layers points,boundary \
+	  --method sig-connect2d --layers points,sigdt,result -o docs/images/steps-sigdt.svg
+	$(SIGDT) render data/inputs/glyph_e_reversed.xy --method sig-connect2d --layers points,boundary \
 	  -o docs/images/steps-inflated.svg
 	$(VPY) python/bench/steps_figure.py data/inputs/glyph_e_reversed.xy docs/images/steps.png
 	mkdir -p docs/images/sig-auto
