@@ -34,7 +34,8 @@
 //!
 //! # Complexity
 //! [`isolated_pieces`]: O(n) time and memory beyond the triangulation (a selection per
-//! piece). [`put_back`]: O(m + k · d · (d + f)) for m reading edges, k isolated points of
+//! piece, and one walk over the pieces beside one another for [`isolate_open_sea`]).
+//! [`put_back`]: O(m + k · d · (d + f)) for m reading edges, k isolated points of
 //! Delaunay degree d and f reading edges that are not Delaunay edges of all points; nothing
 //! when no piece is isolated.
 //!
@@ -109,10 +110,11 @@ pub(super) fn isolated_pieces(dt: &Triangulation) -> Vec<Vec<u32>> {
         .map(|id| {
             // A small piece beside a denser curve; a larger one only when it is a cloud of
             // a few percent of the points of the denser curves beside it.
-            let denser = beside[id]
+            let curve_points: usize = beside[id]
                 .iter()
-                .filter(|&&o| curve(o) && median[id] >= LONG_EDGE_RATIO * median[o]);
-            let curve_points: usize = denser.clone().map(|&o| members[o].len()).sum();
+                .filter(|&&o| curve(o) && median[id] >= LONG_EDGE_RATIO * median[o])
+                .map(|&o| members[o].len())
+                .sum();
             curve_points > 0
                 && (!curve(id)
                     || (members[id].len() * CLOUD_FRACTION <= curve_points
