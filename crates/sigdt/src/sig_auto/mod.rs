@@ -31,9 +31,9 @@
 //!    gets sculpting stuck where the cut reading did not, the cut reading is kept.
 //!    **Isolated pieces** (`isolated`): fewer than seven points, or a scattered cloud of a
 //!    few percent of the points of the curves beside it, sampled at least four times more
-//!    coarsely than those curves, are left out before the first round's reading, with the small pieces
-//!    that lie in such a cloud beside no curve; they are put back where the reading runs
-//!    straight past them, or stops on both sides, along Delaunay edges.
+//!    coarsely than those curves, are left out before the first round's reading, with the
+//!    small pieces that lie in such a cloud beside no curve; they are put back where the
+//!    reading runs straight past them, or stops on both sides, along Delaunay edges.
 //! 5. **Good continuation** (`continuation`): 2-opt moves along Delaunay edges that lower
 //!    the reading's total turning while every new edge keeps `u < 2`, so that two curves
 //!    the graph merged (islands closer together than their spacing) come apart again.
