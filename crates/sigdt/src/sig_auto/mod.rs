@@ -181,11 +181,7 @@ fn with_skipped_samples(dt: &Triangulation, rec: Reconstruction) -> Reconstructi
         return rec;
     }
     let vertex_of = dt.vertex_of_inputs();
-    let reason_is = |reason| {
-        let of = rec.left_out.iter().filter(move |l| l.reason == reason);
-        of.map(|l| l.index)
-    };
-    let mut outliers: Vec<u32> = reason_is(LeftOutReason::Outlier).map(|i| vertex_of[i]).collect();
+    let mut outliers = outlier_vertices(&rec, &vertex_of);
     outliers.sort_unstable();
     let pairs: Vec<[u32; 2]> =
         rec.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
@@ -195,15 +191,33 @@ fn with_skipped_samples(dt: &Triangulation, rec: Reconstruction) -> Reconstructi
         return rec;
     }
     outliers.retain(|v| back.binary_search(v).is_err());
-    let inside: Vec<usize> = reason_is(LeftOutReason::Inside).collect();
-    let mut with_back = finish(dt, reading.pairs(), inside, &outliers, rec.stats);
-    // Putting a sample back does not straighten a zigzag elsewhere.
-    let readable = matches!(with_back.status, Status::Polygon | Status::Polygons | Status::Curves);
+    edited(dt, &rec, reading.pairs(), &outliers)
+}
+
+/// The outliers `rec` left out, as vertices of its triangulation (`vertex_of` maps input
+/// indices to them).
+fn outlier_vertices(rec: &Reconstruction, vertex_of: &[u32]) -> Vec<u32> {
+    let outliers = rec.left_out.iter().filter(|l| l.reason == LeftOutReason::Outlier);
+    outliers.map(|l| vertex_of[l.index]).collect()
+}
+
+/// The result of `pairs`, an edit of `rec`'s reading that left out `outliers` (vertices of
+/// `dt`), checked again. It keeps `rec`'s points left inside, and its status `noisy`: cutting
+/// an outlier out or putting a sample back does not straighten a zigzag elsewhere.
+fn edited(
+    dt: &Triangulation,
+    rec: &Reconstruction,
+    pairs: Vec<[u32; 2]>,
+    outliers: &[u32],
+) -> Reconstruction {
+    let inside = rec.left_out.iter().filter(|l| l.reason == LeftOutReason::Inside);
+    let mut edit = finish(dt, pairs, inside.map(|l| l.index).collect(), outliers, rec.stats);
+    let readable = matches!(edit.status, Status::Polygon | Status::Polygons | Status::Curves);
     if rec.status == Status::Noisy && readable {
-        with_back.status = Status::Noisy;
+        edit.status = Status::Noisy;
     }
-    with_back.diagnosis = diagnose(dt, &with_back);
-    with_back
+    edit.diagnosis = diagnose(dt, &edit);
+    edit
 }
 
 /// Whether `findings` say the reading's curves break the sampling condition by enough to
@@ -237,22 +251,10 @@ fn without_wired_outliers(dt: &Triangulation, rec: &Reconstruction) -> Option<Re
     if cut.is_empty() {
         return None;
     }
-    let mut outliers: Vec<u32> = rec
-        .left_out
-        .iter()
-        .filter(|l| l.reason == LeftOutReason::Outlier)
-        .map(|l| vertex_of[l.index])
-        .collect();
+    let mut outliers = outlier_vertices(rec, &vertex_of);
     outliers.extend(cut);
     let pairs = chain_pairs(curves.iter().map(|(c, closed)| (c.as_slice(), *closed)));
-    let mut cut_rec = finish(dt, pairs, Vec::new(), &outliers, rec.stats);
-    // Cutting a point out does not straighten a zigzag elsewhere.
-    let readable = matches!(cut_rec.status, Status::Polygon | Status::Polygons | Status::Curves);
-    if rec.status == Status::Noisy && readable {
-        cut_rec.status = Status::Noisy;
-    }
-    cut_rec.diagnosis = diagnose(dt, &cut_rec);
-    Some(cut_rec)
+    Some(edited(dt, rec, pairs, &outliers))
 }
 
 /// The edges of vertex sequences, each closed (the last joins the first) or open.
