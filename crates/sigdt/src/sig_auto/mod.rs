@@ -7,8 +7,9 @@
 //!
 //! 1. **Outliers first** (`outliers`): a branch of a component's minimum spanning tree
 //!    that stays farther from the tree's main path than the sample spacing there is a set
-//!    of outliers. They are left out, and the rest is triangulated and read again (a few
-//!    rounds at most; see [`MAX_ROUNDS`]).
+//!    of outliers (within a branch that is kept, the same for its own branches). They are
+//!    left out, and the rest is triangulated and read again (a few rounds at most; see
+//!    [`MAX_ROUNDS`]).
 //! 2. **Chains.** If the component's minimum spanning tree (over its SIGDT2 edges) is a
 //!    path, the component is a *chain*: a piece of curve, open or closed. Chains are then
 //!    joined end to end, and closed into loops, along Delaunay edges no longer than twice
@@ -665,6 +666,17 @@ mod tests {
         (points, truth)
     }
 
+    /// The points of a labelled case on none of its true edges: its outliers.
+    fn off_curve(n: usize, truth: &[(usize, usize)]) -> Vec<usize> {
+        let on_curve: std::collections::HashSet<usize> =
+            truth.iter().flat_map(|&(a, b)| [a, b]).collect();
+        (0..n).filter(|i| !on_curve.contains(i)).collect()
+    }
+
+    fn left_out(rec: &Reconstruction) -> Vec<usize> {
+        rec.left_out.iter().map(|l| l.index).collect()
+    }
+
     fn sorted_edges(rec: &Reconstruction) -> Vec<(usize, usize)> {
         let mut found: Vec<_> = rec.edges.iter().map(|&[a, b]| (a.min(b), a.max(b))).collect();
         found.sort_unstable();
@@ -682,13 +694,25 @@ mod tests {
             include_str!("../../../../data/outlines/gshhs_arch_dalmatia_smooth_outliers.gt"),
         );
         let rec = run(&points);
-        let on_curve: std::collections::HashSet<usize> =
-            truth.iter().flat_map(|&(a, b)| [a, b]).collect();
-        let outliers: Vec<usize> = (0..points.len()).filter(|i| !on_curve.contains(i)).collect();
-        let left_out: Vec<usize> = rec.left_out.iter().map(|l| l.index).collect();
-        assert_eq!(left_out, outliers);
+        assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
         assert_eq!(sorted_edges(&rec), truth);
         assert!(!rec.warns(), "{:?}", rec.diagnosis);
+    }
+
+    #[test]
+    fn an_outlier_hanging_off_a_second_loop_is_left_out() {
+        // An elephant of two loops with 30 outliers. One outlier lies 18 spacings from the
+        // small loop, and the spanning tree hangs it there, in a branch that holds the whole
+        // small loop and so lies near the large one. Before branches were read again inside,
+        // it stayed, was sculpted into a bridge between the loops, and a curve sample was cut.
+        let (points, truth) = labelled(
+            include_str!("../../../../data/outlines/mp7_elephant11_uni050_outliers.xy"),
+            include_str!("../../../../data/outlines/mp7_elephant11_uni050_outliers.gt"),
+        );
+        let rec = run(&points);
+        assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
+        assert_eq!(sorted_edges(&rec), truth);
+        assert_eq!(rec.status, Status::Polygons);
     }
 
     #[test]

@@ -14,7 +14,9 @@
 //!    farther than the spacing at the attachment vertex `a` (the longer of the path edges
 //!    at `a`) from those path edges and their continuations beyond `a`. A branch with one
 //!    vertex near the curve (a noisy sample, a corner, a cusp, the near end of another
-//!    curve) is kept whole.
+//!    curve) is kept, and read again as a tree of its own: a branch of it is left out by
+//!    the same rule when it also lies farther than twice the spacing from every other
+//!    point.
 //! 2. [`detour_outliers`], on the reading: a *detour* is a run of vertices between two
 //!    reading vertices `a` and `b` that are joined by a Delaunay edge. It is cut out, and
 //!    `ab` joined, when every run vertex is farther than the spacing `|ab|` (the curve's
@@ -25,7 +27,8 @@
 //!    curve, not a detour from it).
 //!
 //! # Complexity
-//! Branches: O(k) per component of `k` points. Detours: each walk from `a` stops at the
+//! Branches: O(k · h) per component of `k` points, `h` the depth of branches within kept
+//! branches (one or two on curve input). Detours: each walk from `a` stops at the
 //! first vertex within the spacing, so O(n · degree) per pass over the reading on curve
 //! input; a cut shortens the reading, so at most `n` cuts.
 use super::reading::{Reading, NONE};
@@ -37,19 +40,60 @@ use std::collections::HashMap;
 
 /// The vertices of `vertices` (one component of `dt`, a tree with adjacency `neighbours`)
 /// that lie on branches far from the tree's main path (rule 1 of the module docs).
+///
+/// A branch that is kept (one of its vertices lies near the curve) is a tree of its own,
+/// and the rule is applied to it again: outliers can hang off a second curve that hangs
+/// off the first (a small loop joined to a large one by the spanning tree). Such a nested
+/// branch is left out only if it also lies farther than twice the spacing from every other
+/// point (an edge to any of them would break `u < 2`): the curve it was read against is a
+/// piece of the tree, and another piece (a parallel strand of a noisy band) may run nearer.
 pub(crate) fn branch_outliers(
     dt: &Triangulation,
     vertices: &[u32],
     neighbours: impl Fn(u32) -> Vec<u32>,
     steps: &Steps,
 ) -> Vec<u32> {
-    let ray = |q, from, through| continuation_distance(steps, q, from, through);
-    let path = main_path(dt, vertices, &neighbours);
-    let position: HashMap<u32, usize> = path.iter().enumerate().map(|(i, &v)| (v, i)).collect();
-    let mut in_branch = vec![false; dt.num_vertices()];
+    // `tree_of[v]` names the (sub)tree `v` is being read in; a subtree's members are the
+    // vertices of its branch, so its adjacency is the tree's restricted to them.
+    let mut tree_of: HashMap<u32, u32> = HashMap::with_capacity(vertices.len());
     let mut outliers = Vec::new();
+    let mut trees = vec![vertices.to_vec()];
+    let mut next_id = 0u32;
+    while let Some(tree) = trees.pop() {
+        let nested = next_id > 0;
+        let id = next_id;
+        next_id += 1;
+        tree_of.extend(tree.iter().map(|&v| (v, id)));
+        let within = |v: u32| {
+            let mut ws = neighbours(v);
+            ws.retain(|w| tree_of.get(w) == Some(&id));
+            ws
+        };
+        let (far, kept) = far_branches(dt, &tree, &within, nested, steps);
+        outliers.extend(far);
+        trees.extend(kept.into_iter().filter(|b| b.len() >= OWN_CURVE_POINTS));
+    }
+    outliers.sort_unstable();
+    outliers
+}
+
+/// One level of [`branch_outliers`]: the vertices of the branches of the tree `vertices`
+/// that lie far from its main path (and, when `nested`, from every other point), and the
+/// branches kept.
+fn far_branches(
+    dt: &Triangulation,
+    vertices: &[u32],
+    neighbours: &impl Fn(u32) -> Vec<u32>,
+    nested: bool,
+    steps: &Steps,
+) -> (Vec<u32>, Vec<Vec<u32>>) {
+    let ray = |q, from, through| continuation_distance(steps, q, from, through);
+    let path = main_path(dt, vertices, neighbours);
+    let position: HashMap<u32, usize> = path.iter().enumerate().map(|(i, &v)| (v, i)).collect();
+    let mut in_branch: HashMap<u32, ()> = HashMap::new();
+    let (mut outliers, mut kept) = (Vec::new(), Vec::new());
     for &start in vertices.iter().filter(|v| !position.contains_key(v)) {
-        if std::mem::replace(&mut in_branch[start as usize], true) {
+        if in_branch.insert(start, ()).is_some() {
             continue;
         }
         let (mut members, mut anchor) = (vec![start], None);
@@ -65,7 +109,7 @@ pub(crate) fn branch_outliers(
                     continue;
                 }
                 inner = inner.max(distance(dt.point(v), dt.point(w)));
-                if !std::mem::replace(&mut in_branch[w as usize], true) {
+                if in_branch.insert(w, ()).is_none() {
                     members.push(w);
                 }
             }
@@ -86,15 +130,34 @@ pub(crate) fn branch_outliers(
             near.fold(distance(q, pa), f64::min)
         };
         let nearest = members.iter().map(|&o| off(o)).fold(f64::INFINITY, f64::min);
+        let far = |d: f64, ratio: f64| d > ratio * spacing * (1.0 + TIE_SLACK);
         if spacing > 0.0
-            && nearest > spacing * (1.0 + TIE_SLACK)
+            && far(nearest, 1.0)
+            && (!nested || far(distance_to_others(dt, &members), 2.0))
             && !(steps.own_curves && own_curve(members.len(), inner, nearest))
         {
             outliers.extend(members);
+        } else {
+            kept.push(members);
         }
     }
-    outliers.sort_unstable();
-    outliers
+    (outliers, kept)
+}
+
+/// The distance from the points `members` to the nearest other point. The closest pair
+/// between two point sets is a Delaunay edge (its diametral disk is empty), so the
+/// members' Delaunay edges suffice.
+fn distance_to_others(dt: &Triangulation, members: &[u32]) -> f64 {
+    let set: std::collections::HashSet<u32> = members.iter().copied().collect();
+    let mut nearest = f64::INFINITY;
+    for &o in members {
+        for h in dt.outgoing(o) {
+            if !set.contains(&dt.dest(h)) {
+                nearest = nearest.min(dt.length(h));
+            }
+        }
+    }
+    nearest
 }
 
 /// The distance from `q` to the ray from `through` away from `from` (the straight
