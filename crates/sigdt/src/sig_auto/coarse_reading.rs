@@ -13,7 +13,10 @@
 //!    a subset of points at least `f · s` apart (greedy, in vertex order: a Poisson-disk
 //!    sample), and read it with SIG-AUTO.
 //! 2. The first coarse reading that is closed curves only (status `polygon` or `polygons`)
-//!    and passes the sampling check on its own points is used.
+//!    and passes the sampling check on its own points is used. Loops too small for a
+//!    sampled curve that hold only points the fine reading left out as outliers are dropped
+//!    first, and those points stay outliers: thinning keeps every outlier while it spaces
+//!    the curve like them, so a cluster of outliers can read as a loop at the coarse scale.
 //! 3. Every point goes to the coarse loop edge nearest to it (among the edges at its three
 //!    nearest coarse loop vertices), at the parameter of its foot on that edge; each edge's
 //!    points follow in that order (ties by index). A point farther than `f · s` from every
@@ -41,7 +44,7 @@ use crate::delaunay::Triangulation;
 use crate::geometry::{distance, orient2d, segment_foot, segments_cross, Point};
 use crate::proximity::kdtree::KdTree;
 use crate::proximity::nearest::nearest_vertex_distances;
-use crate::result::{check_curves, Status};
+use crate::result::{check_curves, Finding, FindingKind, Status, MIN_LOOP_POINTS};
 
 /// The thinning factors tried, coarsest last: the spacing of the coarse points in units of
 /// the median nearest-neighbour distance.
@@ -58,8 +61,12 @@ pub(super) struct FineReading {
 }
 
 /// The fine reading of the first level of [`THINNING`] that works (module docs), or
-/// `None`.
-pub(super) fn coarse_reading(dt: &Triangulation, steps: &Steps) -> Option<FineReading> {
+/// `None`. `left_out` are the vertices the fine reading left out as outliers (step 2).
+pub(super) fn coarse_reading(
+    dt: &Triangulation,
+    steps: &Steps,
+    left_out: &[u32],
+) -> Option<FineReading> {
     let mut r = nearest_vertex_distances(dt);
     let middle = r.len() / 2;
     let (_, &mut spacing, _) = r.select_nth_unstable_by(middle, f64::total_cmp);
@@ -76,15 +83,15 @@ pub(super) fn coarse_reading(dt: &Triangulation, steps: &Steps) -> Option<FineRe
         let points: Vec<Point> = kept.iter().map(|&v| dt.point(v)).collect();
         let Ok(sub) = Triangulation::new(&points) else { continue };
         let coarse = sig_auto_with(&sub, &inner);
-        if !matches!(coarse.status, Status::Polygon | Status::Polygons)
-            || super::curves_fail(&coarse.diagnosis)
-            || coarse.loops.is_empty()
-        {
+        if !matches!(coarse.status, Status::Polygon | Status::Polygons) {
             continue;
         }
         let loops: Vec<Vec<u32>> =
             coarse.loops.iter().map(|l| l.iter().map(|&i| kept[i]).collect()).collect();
-        if let Some(fine) = refine(dt, &loops, radius) {
+        let Some((loops, settled)) = passing_loops(loops, &coarse.diagnosis, left_out) else {
+            continue;
+        };
+        if let Some(fine) = refine(dt, &loops, radius, &settled) {
             let found = check_curves(dt, fine.loops.iter().map(|l| (l.as_slice(), true)));
             if !super::curves_fail(&found) {
                 return Some(fine);
@@ -92,6 +99,32 @@ pub(super) fn coarse_reading(dt: &Triangulation, steps: &Steps) -> Option<FineRe
         }
     }
     None
+}
+
+/// The coarse `loops` to refine and the vertices settled as outliers, if the coarse
+/// reading passes the sampling check (its `findings`). One failure is forgiven: loops too
+/// small for a sampled curve made only of points the fine reading `left_out` as outliers.
+/// Thinning keeps every outlier (none has a neighbour within the radius) while it spaces
+/// the curve like a cluster of them, so at the coarse scale a few outliers can read as a
+/// curve; they are dropped, and stay outliers.
+fn passing_loops(
+    loops: Vec<Vec<u32>>,
+    findings: &[Finding],
+    left_out: &[u32],
+) -> Option<(Vec<Vec<u32>>, Vec<u32>)> {
+    let failing = || findings.iter().filter(|f| super::fails(f));
+    if failing().next().is_none() {
+        return (!loops.is_empty()).then_some((loops, Vec::new()));
+    }
+    if !failing().all(|f| f.kind == FindingKind::SmallLoops) {
+        return None;
+    }
+    let (small, rest): (Vec<_>, Vec<_>) =
+        loops.into_iter().partition(|l| l.len() < MIN_LOOP_POINTS);
+    let mut settled = small.concat();
+    settled.sort_unstable();
+    let all_left_out = settled.iter().all(|v| left_out.contains(v));
+    (all_left_out && !rest.is_empty()).then_some((rest, settled))
 }
 
 /// Points bucketed in square cells of side `radius`, to ask whether a new point has one
@@ -142,8 +175,14 @@ fn thin(dt: &Triangulation, radius: f64) -> Vec<u32> {
 }
 
 /// Every vertex of `dt` placed along the coarse `loops` (step 3 of the module docs), with
-/// crossings repaired (step 4); `None` if a crossing or touch remains.
-fn refine(dt: &Triangulation, loops: &[Vec<u32>], radius: f64) -> Option<FineReading> {
+/// crossings repaired (step 4); `None` if a crossing or touch remains. The `settled`
+/// vertices (sorted) are outliers already.
+fn refine(
+    dt: &Triangulation,
+    loops: &[Vec<u32>],
+    radius: f64,
+    settled: &[u32],
+) -> Option<FineReading> {
     // Coarse loop vertices, and for each its loop and position.
     let on_loop: Vec<(usize, usize)> =
         loops.iter().enumerate().flat_map(|(l, lp)| (0..lp.len()).map(move |k| (l, k))).collect();
@@ -155,7 +194,7 @@ fn refine(dt: &Triangulation, loops: &[Vec<u32>], radius: f64) -> Option<FineRea
     let mut along: HashMap<(usize, usize), Vec<(f64, u32)>> = HashMap::new();
     let mut outliers = Vec::new();
     for v in 0..dt.num_vertices() as u32 {
-        if is_coarse[v as usize] {
+        if is_coarse[v as usize] || settled.binary_search(&v).is_ok() {
             continue;
         }
         let p = dt.point(v);
@@ -179,6 +218,8 @@ fn refine(dt: &Triangulation, loops: &[Vec<u32>], radius: f64) -> Option<FineRea
     if !isolated(dt, &outliers, radius) {
         return None;
     }
+    outliers.extend(settled);
+    outliers.sort_unstable();
     let mut fine = Vec::with_capacity(loops.len());
     for (l, lp) in loops.iter().enumerate() {
         let mut seq = Vec::new();
@@ -368,7 +409,7 @@ mod tests {
     fn a_noisy_circle_reads_as_one_loop_through_its_points() {
         let points = noisy_circle(300, 0.5, 7);
         let dt = Triangulation::new(&points).unwrap();
-        let fine = coarse_reading(&dt, &Steps::default()).expect("a fine reading");
+        let fine = coarse_reading(&dt, &Steps::default(), &[]).expect("a fine reading");
         assert_eq!(fine.loops.len(), 1);
         assert_eq!(fine.loops[0].len() + fine.outliers.len(), 300);
         assert!(fine.outliers.is_empty());

@@ -158,7 +158,8 @@ fn checked_reading(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     if !(steps.coarse && broken) {
         return rec;
     }
-    match coarse_reading::coarse_reading(dt, steps) {
+    let left_out = outlier_vertices(&rec, &dt.vertex_of_inputs());
+    match coarse_reading::coarse_reading(dt, steps, &left_out) {
         Some(fine) => {
             let pairs = chain_pairs(fine.loops.iter().map(|l| (l.as_slice(), true)));
             // Threaded through noisy points, the loops zigzag where the noise does: the
@@ -230,11 +231,17 @@ fn edited(
 /// outlines), and open ends that meet (a coarser reading closes open curves that should
 /// stay open: it lost three of `data/curves`; `docs/sig-auto.md`).
 fn curves_fail(findings: &[Finding]) -> bool {
-    findings.iter().any(|f| match f.kind {
+    findings.iter().any(fails)
+}
+
+/// Whether a finding of the sampling check says the curves are not the points' curves
+/// (rather than a doubt about some points or the ends).
+fn fails(finding: &Finding) -> bool {
+    match finding.kind {
         FindingKind::OutliersOnCurve | FindingKind::NoisyArea | FindingKind::EndsMeet => false,
-        FindingKind::PassesOverSamples => f.worst >= DEPTH_RATIO,
+        FindingKind::PassesOverSamples => finding.worst >= DEPTH_RATIO,
         _ => true,
-    })
+    }
 }
 
 /// `rec` with the points where it doubles back left out as outliers (`wired_outliers`),
@@ -713,6 +720,22 @@ mod tests {
         assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
         assert_eq!(sorted_edges(&rec), truth);
         assert_eq!(rec.status, Status::Polygons);
+    }
+
+    #[test]
+    fn outliers_that_read_as_a_loop_when_thinned_stay_outliers() {
+        // A device outline with 18 outliers. Its first reading leaves them all out but cuts
+        // three curve samples as detours and gets sculpting stuck, so the points are read
+        // again at a coarser scale. Thinning keeps every outlier and spaces the curve like
+        // them, and three outliers then read as a small loop, which failed every level:
+        // the three samples stayed cut.
+        let (points, truth) = labelled(
+            include_str!("../../../../data/outlines/mp7_device713_lfs030_outliers.xy"),
+            include_str!("../../../../data/outlines/mp7_device713_lfs030_outliers.gt"),
+        );
+        let rec = run(&points);
+        assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
+        assert_eq!(rec.loops.len(), 1);
     }
 
     #[test]
