@@ -401,6 +401,8 @@ fn branches_far_off(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Vec
         if branched {
             let neighbours = |v: u32| tree.neighbours(v).to_vec();
             found.extend(outliers::branch_outliers(dt, &vertices, neighbours, steps));
+        } else {
+            found.extend(outliers::chain_end_outliers(dt, &tree.walk(&vertices), steps));
         }
     }
     found
@@ -736,6 +738,22 @@ mod tests {
         let rec = run(&points);
         assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
         assert_eq!(rec.loops.len(), 1);
+    }
+
+    #[test]
+    fn outliers_strung_onto_the_end_of_a_closed_curve_are_left_out() {
+        // An apple with 13 outliers. After the first two rounds, two outliers are left, and
+        // the spanning tree strings them onto one end of the apple's path, so the component
+        // is a chain that cannot close: it came back as an open path with a tail into the
+        // apple, status `curves`, and no warning.
+        let (points, truth) = labelled(
+            include_str!("../../../../data/real/mp7_apple11_lfs030_out07.xy"),
+            include_str!("../../../../data/real/mp7_apple11_lfs030_out07.gt"),
+        );
+        let rec = run(&points);
+        assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
+        assert_eq!(sorted_edges(&rec), truth);
+        assert_eq!(rec.status, Status::Polygon);
     }
 
     #[test]

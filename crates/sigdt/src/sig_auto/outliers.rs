@@ -16,7 +16,10 @@
 //!    vertex near the curve (a noisy sample, a corner, a cusp, the near end of another
 //!    curve) is kept, and read again as a tree of its own: a branch of it is left out by
 //!    the same rule when it also lies farther than twice the spacing from every other
-//!    point.
+//!    point. A tree that is a path (a chain) has no branches, but the spanning tree can
+//!    string outliers onto the end of a closed curve's path: an end run that breaks
+//!    `u < 2`, is far off by the same rule, and keeps the ends from closing with `u < 2`
+//!    where they close without it, is left out too ([`chain_end_outliers`]).
 //! 2. [`detour_outliers`], on the reading: a *detour* is a run of vertices between two
 //!    reading vertices `a` and `b` that are joined by a Delaunay edge. It is cut out, and
 //!    `ab` joined, when every run vertex is farther than the spacing `|ab|` (the curve's
@@ -87,7 +90,6 @@ fn far_branches(
     nested: bool,
     steps: &Steps,
 ) -> (Vec<u32>, Vec<Vec<u32>>) {
-    let ray = |q, from, through| continuation_distance(steps, q, from, through);
     let path = main_path(dt, vertices, neighbours);
     let position: HashMap<u32, usize> = path.iter().enumerate().map(|(i, &v)| (v, i)).collect();
     let mut in_branch: HashMap<u32, ()> = HashMap::new();
@@ -116,6 +118,90 @@ fn far_branches(
             k += 1;
         }
         let Some(i) = anchor else { continue };
+        let branch = Branch { members: &members, inner, path: &path, at: i };
+        if branch.is_far_off(dt, nested, steps) {
+            outliers.extend(members);
+        } else {
+            kept.push(members);
+        }
+    }
+    (outliers, kept)
+}
+
+/// The vertices at one end of a chain (a component whose tree is the path `path`) that
+/// keep a closed curve from closing: an end run that breaks `u < 2` ([`end_run`]), lies far
+/// from the rest by the branch rule, and without which the chain's ends close with
+/// `u < 2` at both, where with it they do not. (Outliers the spanning tree strung onto the
+/// end of a closed curve's path; an open curve's end stays.)
+pub(crate) fn chain_end_outliers(dt: &Triangulation, path: &[u32], steps: &Steps) -> Vec<u32> {
+    let mut path = path.to_vec();
+    for _ in 0..2 {
+        let k = end_run(dt, &path);
+        if k > 0 && k + 3 <= path.len() && !closes(dt, &path) && closes(dt, &path[k..]) {
+            let members = &path[..k];
+            let inner = members
+                .windows(2)
+                .map(|e| distance(dt.point(e[0]), dt.point(e[1])))
+                .fold(0.0, f64::max);
+            let branch = Branch { members, inner, path: &path[k..], at: 0 };
+            if branch.is_far_off(dt, false, steps) {
+                let mut outliers = members.to_vec();
+                outliers.sort_unstable();
+                return outliers;
+            }
+        }
+        path.reverse();
+    }
+    Vec::new()
+}
+
+/// Whether the edge between the two ends of `path` keeps `u < 2` with the path's edge at
+/// each end.
+fn closes(dt: &Triangulation, path: &[u32]) -> bool {
+    let n = path.len();
+    let length = |a: u32, b: u32| distance(dt.point(a), dt.point(b));
+    let gap = length(path[0], path[n - 1]);
+    n >= 3
+        && u_below_2(gap, length(path[0], path[1]))
+        && u_below_2(gap, length(path[n - 1], path[n - 2]))
+}
+
+/// How many vertices at the start of `path` come before its first vertex that keeps
+/// `u < 2` toward the start: the run `p0 … p(k-1)` such that at each of `p1 … pk` the edge
+/// toward the start is more than twice the edge away from it. A sampled curve's end has
+/// no such run (k = 0); outliers the spanning tree strung onto the end of a curve do.
+fn end_run<'a>(dt: &Triangulation, path: impl IntoIterator<Item = &'a u32>) -> usize {
+    let mut path = path.into_iter().map(|&v| dt.point(v));
+    let (Some(mut previous), Some(mut current)) = (path.next(), path.next()) else {
+        return 0;
+    };
+    let mut k = 0;
+    for next in path {
+        let (toward, away) = (distance(previous, current), distance(current, next));
+        if toward <= 2.0 * away * (1.0 + TIE_SLACK) {
+            break;
+        }
+        k += 1;
+        (previous, current) = (current, next);
+    }
+    k
+}
+
+/// A branch off a tree's main path: its `members`, the longest tree edge among them
+/// (`inner`), and the vertex of `path` it hangs from (`at`).
+struct Branch<'a> {
+    members: &'a [u32],
+    inner: f64,
+    path: &'a [u32],
+    at: usize,
+}
+
+impl Branch<'_> {
+    /// Rule 1 of the module docs: every member farther than the spacing at the attachment
+    /// vertex from the path edges there and their continuations, not a curve of its own,
+    /// and, `nested`, farther than twice the spacing from every other point.
+    fn is_far_off(&self, dt: &Triangulation, nested: bool, steps: &Steps) -> bool {
+        let (path, i) = (self.path, self.at);
         let a = path[i];
         let sides: Vec<u32> =
             [i.wrapping_sub(1), i + 1].into_iter().filter_map(|j| path.get(j).copied()).collect();
@@ -125,23 +211,17 @@ fn far_branches(
             let (q, pa) = (dt.point(o), dt.point(a));
             let near = sides.iter().map(|&s| {
                 let ps = dt.point(s);
-                segment_distance(q, pa, ps).min(ray(q, ps, pa))
+                segment_distance(q, pa, ps).min(continuation_distance(steps, q, ps, pa))
             });
             near.fold(distance(q, pa), f64::min)
         };
-        let nearest = members.iter().map(|&o| off(o)).fold(f64::INFINITY, f64::min);
+        let nearest = self.members.iter().map(|&o| off(o)).fold(f64::INFINITY, f64::min);
         let far = |d: f64, ratio: f64| d > ratio * spacing * (1.0 + TIE_SLACK);
-        if spacing > 0.0
+        spacing > 0.0
             && far(nearest, 1.0)
-            && (!nested || far(distance_to_others(dt, &members), 2.0))
-            && !(steps.own_curves && own_curve(members.len(), inner, nearest))
-        {
-            outliers.extend(members);
-        } else {
-            kept.push(members);
-        }
+            && (!nested || far(distance_to_others(dt, self.members), 2.0))
+            && !(steps.own_curves && own_curve(self.members.len(), self.inner, nearest))
     }
-    (outliers, kept)
 }
 
 /// The distance from the points `members` to the nearest other point. The closest pair
