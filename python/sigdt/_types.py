@@ -115,7 +115,8 @@ class Finding(TypedDict):
     curve may go on there), ``"ends-meet"`` (two ends of open paths lie less than four
     times their last edges apart: the curve may close there), ``"outliers-on-curve"``
     (points left out as outliers lie within half their spacing of an edge of the result,
-    or nearer to one of its vertices than half that vertex's longer edge) or
+    nearer to one of its vertices than half that vertex's longer edge, or nearer to an
+    edge than its length) or
     ``"noisy-area"`` (the loops' turns reverse at most points, as noise makes them, by
     enough to make the area they enclose uncertain by more than 5 %); ``count`` edges,
     points, pairs of ends or loops show it; ``worst`` is the deepest reach in point

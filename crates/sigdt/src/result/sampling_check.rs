@@ -39,7 +39,9 @@
 //!    reading passed by and dropped (where curves come closer than their spacing, ρ ≥ 1),
 //!    not an outlier. So is one nearer to a vertex of the result than half that vertex's
 //!    longer edge: by property 2 and u < 2 no other sample is that near (the reading
-//!    skipped it and ran on past with a longer edge). Finding
+//!    skipped it and ran on past with a longer edge). And one nearer to an edge of the
+//!    result than that edge is long is within the curve's spacing, where noise can put a
+//!    sample: no outlier by SIG-AUTO's own rule, so the curve may run through it. Finding
 //!    [`FindingKind::OutliersOnCurve`].
 //!
 //! 6. **A sampled curve turns one way between its inflections**, and its curvature varies
@@ -131,8 +133,9 @@ pub enum FindingKind {
     SmallLoops,
     /// Ends of open paths with another point nearer than half their last edge.
     OpenEnds,
-    /// Points left out as outliers within half their spacing of an edge of the result, or
-    /// nearer to one of its vertices than half that vertex's longer edge.
+    /// Points left out as outliers within half their spacing of an edge of the result,
+    /// nearer to one of its vertices than half that vertex's longer edge, or nearer to an
+    /// edge than its length.
     OutliersOnCurve,
     /// Pairs of ends of open paths nearer to each other than [`LONG_EDGE_RATIO`] times their
     /// longer last edge (`result/ends_meet.rs`): the curve may go on, or close, there.
@@ -189,8 +192,9 @@ impl std::fmt::Display for Finding {
             ),
             FindingKind::OutliersOnCurve => write!(
                 f,
-                "{} point(s) left out as outliers lie on the curves (worst at point {}, {:.2} \
-                 of the point spacing from them; an outlier lies off them)",
+                "{} point(s) left out as outliers lie on or near the curves (worst at point {}, \
+                 {:.2} of the point spacing from them; an outlier lies farther off than the \
+                 curve's spacing)",
                 self.count, self.at, self.worst
             ),
             FindingKind::EndsMeet => write!(
@@ -455,7 +459,7 @@ fn outliers_on_curve(dt: &Triangulation, outliers: &[u32], curves: &[(Vec<u32>, 
     for &v in outliers {
         let (p, spacing) = (dt.point(v), nearest_distance(dt, v));
         let on_curve = |w: u32| next[w as usize].into_iter().filter(|&u| u != u32::MAX);
-        let mut nearest = f64::INFINITY;
+        let (mut nearest, mut within_spacing) = (f64::INFINITY, false);
         for w in dt.incident(v).map(|h| dt.other(h, v)) {
             // Under u < 2 a vertex's nearest sample is no nearer than half its longer
             // edge: a point nearer than that is inside the curve's sampling.
@@ -465,10 +469,13 @@ fn outliers_on_curve(dt: &Triangulation, outliers: &[u32], curves: &[(Vec<u32>, 
                 nearest = nearest.min(distance(p, dt.point(w)) / longer);
             }
             for u in on_curve(w) {
-                nearest = nearest.min(segment_distance(p, dt.point(w), dt.point(u)) / spacing);
+                let off = segment_distance(p, dt.point(w), dt.point(u));
+                nearest = nearest.min(off / spacing);
+                // The outlier rule's own bound: no nearer to an edge than its length.
+                within_spacing |= off < distance(dt.point(w), dt.point(u));
             }
         }
-        if nearest < 0.5 {
+        if nearest < 0.5 || within_spacing {
             // Negated, so that the nearest is the worst.
             tally.add(-nearest, dt.input_index(v));
         }
@@ -580,7 +587,7 @@ mod tests {
         assert_eq!(on_curve.len(), 1, "{found:?}");
         assert_eq!((on_curve[0].count, on_curve[0].at), (1, 7));
         assert!(on_curve[0].worst < 0.1, "{found:?}");
-        assert!(on_curve[0].to_string().contains("1 point(s) left out as outliers lie on the"));
+        assert!(on_curve[0].to_string().contains("1 point(s) left out as outliers lie on or near"));
         let found = diagnose(&dt, &rec(vec![outlier(60)]));
         assert!(found.iter().all(|f| f.kind != FindingKind::OutliersOnCurve), "{found:?}");
     }
@@ -606,6 +613,33 @@ mod tests {
         assert_eq!(on_curve.len(), 1, "{found:?}");
         assert_eq!(on_curve[0].count, 2, "{found:?}");
         assert!(on_curve[0].worst > 0.3 && on_curve[0].worst < 0.5, "{found:?}");
+    }
+
+    #[test]
+    fn an_outlier_within_an_edge_length_of_its_edge_is_near_the_curve() {
+        // A 60-gon and a point 0.7 spacings outside the middle of its edge 7–8: 0.81 of its
+        // own spacing from the edge and 0.86 edges from the vertices, so neither half-spacing
+        // bound holds, but it is nearer to the edge than the edge is long, where the outlier
+        // rule would have kept it.
+        use crate::result::{LeftOut, LeftOutReason};
+        let mut points = circle(60);
+        let (a, b) = (points[7], points[8]);
+        let spacing = distance(a, b);
+        let middle = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
+        let out = 1.0 + 0.7 * spacing / distance(middle, [0.0, 0.0]);
+        points.push(middle.map(|c| c * out));
+        let dt = Triangulation::new(&points).unwrap();
+        let left_out = vec![LeftOut { index: 60, reason: LeftOutReason::Outlier }];
+        let rec = Reconstruction {
+            loops: vec![(0..60).collect()],
+            left_out,
+            ..Reconstruction::default()
+        };
+        let found = diagnose(&dt, &rec);
+        let on_curve: Vec<&Finding> =
+            found.iter().filter(|f| f.kind == FindingKind::OutliersOnCurve).collect();
+        assert_eq!(on_curve.len(), 1, "{found:?}");
+        assert!(on_curve[0].worst > 0.5 && on_curve[0].worst < 1.0, "{found:?}");
     }
 
     #[test]
