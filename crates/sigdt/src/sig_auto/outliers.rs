@@ -39,7 +39,7 @@ use super::Steps;
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, ray_distance, segment_distance, squared_distance, Point};
 use crate::proximity::sigdt::TIE_SLACK;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// The vertices of `vertices` (one component of `dt`, a tree with adjacency `neighbours`)
 /// that lie on branches far from the tree's main path (rule 1 of the module docs).
@@ -92,10 +92,10 @@ fn far_branches(
 ) -> (Vec<u32>, Vec<Vec<u32>>) {
     let path = main_path(dt, vertices, neighbours);
     let position: HashMap<u32, usize> = path.iter().enumerate().map(|(i, &v)| (v, i)).collect();
-    let mut in_branch: HashMap<u32, ()> = HashMap::new();
+    let mut in_branch: HashSet<u32> = HashSet::new();
     let (mut outliers, mut kept) = (Vec::new(), Vec::new());
     for &start in vertices.iter().filter(|v| !position.contains_key(v)) {
-        if in_branch.insert(start, ()).is_some() {
+        if !in_branch.insert(start) {
             continue;
         }
         let (mut members, mut anchor) = (vec![start], None);
@@ -111,7 +111,7 @@ fn far_branches(
                     continue;
                 }
                 inner = inner.max(distance(dt.point(v), dt.point(w)));
-                if in_branch.insert(w, ()).is_none() {
+                if in_branch.insert(w) {
                     members.push(w);
                 }
             }
@@ -228,7 +228,7 @@ impl Branch<'_> {
 /// between two point sets is a Delaunay edge (its diametral disk is empty), so the
 /// members' Delaunay edges suffice.
 fn distance_to_others(dt: &Triangulation, members: &[u32]) -> f64 {
-    let set: std::collections::HashSet<u32> = members.iter().copied().collect();
+    let set: HashSet<u32> = members.iter().copied().collect();
     let mut nearest = f64::INFINITY;
     for &o in members {
         for h in dt.outgoing(o) {
