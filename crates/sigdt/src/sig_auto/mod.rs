@@ -675,15 +675,17 @@ mod tests {
         (points, truth)
     }
 
-    /// The points of a labelled case on none of its true edges: its outliers.
-    fn off_curve(n: usize, truth: &[(usize, usize)]) -> Vec<usize> {
+    /// SIG-AUTO on a labelled case, checked to leave out exactly its outliers (the points
+    /// on none of its true edges); the result and the true edges.
+    fn with_outliers_left_out(xy: &str, gt: &str) -> (Reconstruction, Vec<(usize, usize)>) {
+        let (points, truth) = labelled(xy, gt);
+        let rec = run(&points);
         let on_curve: std::collections::HashSet<usize> =
             truth.iter().flat_map(|&(a, b)| [a, b]).collect();
-        (0..n).filter(|i| !on_curve.contains(i)).collect()
-    }
-
-    fn left_out(rec: &Reconstruction) -> Vec<usize> {
-        rec.left_out.iter().map(|l| l.index).collect()
+        let outliers: Vec<usize> = (0..points.len()).filter(|i| !on_curve.contains(i)).collect();
+        let left_out: Vec<usize> = rec.left_out.iter().map(|l| l.index).collect();
+        assert_eq!(left_out, outliers);
+        (rec, truth)
     }
 
     fn sorted_edges(rec: &Reconstruction) -> Vec<(usize, usize)> {
@@ -698,12 +700,10 @@ mod tests {
         // outliers link into pieces by their own spacing: a cloud of 13 beside eight islands
         // (a twentieth of their points together, not of any one), and pieces of two beside
         // nothing but the cloud. Before, they were wired into polygons across the sea.
-        let (points, truth) = labelled(
+        let (rec, truth) = with_outliers_left_out(
             include_str!("../../../../data/outlines/gshhs_arch_dalmatia_smooth_outliers.xy"),
             include_str!("../../../../data/outlines/gshhs_arch_dalmatia_smooth_outliers.gt"),
         );
-        let rec = run(&points);
-        assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
         assert_eq!(sorted_edges(&rec), truth);
         assert!(!rec.warns(), "{:?}", rec.diagnosis);
     }
@@ -714,12 +714,10 @@ mod tests {
         // small loop, and the spanning tree hangs it there, in a branch that holds the whole
         // small loop and so lies near the large one. Before branches were read again inside,
         // it stayed, was sculpted into a bridge between the loops, and a curve sample was cut.
-        let (points, truth) = labelled(
+        let (rec, truth) = with_outliers_left_out(
             include_str!("../../../../data/outlines/mp7_elephant11_uni050_outliers.xy"),
             include_str!("../../../../data/outlines/mp7_elephant11_uni050_outliers.gt"),
         );
-        let rec = run(&points);
-        assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
         assert_eq!(sorted_edges(&rec), truth);
         assert_eq!(rec.status, Status::Polygons);
     }
@@ -731,12 +729,10 @@ mod tests {
         // again at a coarser scale. Thinning keeps every outlier and spaces the curve like
         // them, and three outliers then read as a small loop, which failed every level:
         // the three samples stayed cut.
-        let (points, truth) = labelled(
+        let (rec, _) = with_outliers_left_out(
             include_str!("../../../../data/outlines/mp7_device713_lfs030_outliers.xy"),
             include_str!("../../../../data/outlines/mp7_device713_lfs030_outliers.gt"),
         );
-        let rec = run(&points);
-        assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
         assert_eq!(rec.loops.len(), 1);
     }
 
@@ -746,12 +742,10 @@ mod tests {
         // the spanning tree strings them onto one end of the apple's path, so the component
         // is a chain that cannot close: it came back as an open path with a tail into the
         // apple, status `curves`, and no warning.
-        let (points, truth) = labelled(
+        let (rec, truth) = with_outliers_left_out(
             include_str!("../../../../data/real/mp7_apple11_lfs030_out07.xy"),
             include_str!("../../../../data/real/mp7_apple11_lfs030_out07.gt"),
         );
-        let rec = run(&points);
-        assert_eq!(left_out(&rec), off_curve(points.len(), &truth));
         assert_eq!(sorted_edges(&rec), truth);
         assert_eq!(rec.status, Status::Polygon);
     }
