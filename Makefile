@@ -113,8 +113,10 @@ lint:
 rust-test:
 	$(CARGO) test --locked --workspace
 
+# Private items too: their links are what the next developer follows.
 doc:
 	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps --workspace
+	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps --workspace --document-private-items
 
 ## bench: the speed tables (make bench SIZES=1e5,1e6,1e7 for the large sizes): Delaunay,
 ## total, CGAL (when libcgal-dev is installed), memory per point, one thread against two;

@@ -1,7 +1,7 @@
 //! Which reconstruction method to run, its options, and the entry points that run it.
 //!
 //! [`reconstruct`] validates the input once (through [`Triangulation::new`]) and dispatches
-//! to the method's module: [`sig_connect2d`](crate::sig_connect2d), [`sig_auto`](crate::sig_auto)
+//! to the method's module: [`sig_connect2d`], [`sig_auto`]
 //! or a baseline. Every method returns a [`Reconstruction`] with the same invariants.
 
 use std::fmt;

@@ -1,6 +1,6 @@
 //! Symmetric difference of area between a reconstruction and the ground truth.
 //!
-//! `docs/algorithms.md` §4.6, after [MOW22] (Figs. 10, 11, 19), who used Boost.Geometry's
+//! `docs/algorithms.md` §4.6, after \[MOW22\] (Figs. 10, 11, 19), who used Boost.Geometry's
 //! `sym_difference`, whose rings are implicitly closed:
 //!
 //! 1. Each edge set is cut into maximal chains: cycles of degree-2 vertices and paths between
@@ -26,7 +26,7 @@
 //! themselves cross everywhere (a random polygon).
 //!
 //! # References
-//! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//! - \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 use super::input::{check_all, edge_bbox, extent, proper_edges, UnitScale};
 use i_overlay::core::fill_rule::FillRule;
 use i_overlay::core::overlay_rule::OverlayRule;

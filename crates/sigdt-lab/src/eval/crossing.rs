@@ -1,6 +1,6 @@
 //! Whether two edges of a graph cross: the Shamos–Hoey sweep.
 //!
-//! [SH76]: sweep a vertical line from left to right, keep the edges it meets ordered from
+//! \[SH76\]: sweep a vertical line from left to right, keep the edges it meets ordered from
 //! bottom to top, and test only edges that become neighbours in that order (on insertion,
 //! and when the edge between two neighbours is removed). The leftmost crossing is between
 //! two edges that are neighbours just before it, so the sweep finds a crossing whenever
@@ -18,7 +18,7 @@
 //! edges that one vertical line meets (small on curves; at worst O(m) a step).
 //!
 //! # References
-//! - [SH76] M. I. Shamos, D. Hoey. Geometric intersection problems. FOCS 1976.
+//! - \[SH76\] M. I. Shamos, D. Hoey. Geometric intersection problems. FOCS 1976.
 use sigdt::internals::orient2d;
 use sigdt::{Edge, Point};
 use std::cmp::Ordering;

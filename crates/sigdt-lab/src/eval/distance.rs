@@ -1,7 +1,7 @@
 //! Distance errors between a reconstruction and the ground-truth polygon.
 //!
 //! `docs/algorithms.md` §4.5, after the "RMS error between the reconstructed curve and the
-//! original" of [MOW22] (Figs. 14, 16–18):
+//! original" of \[MOW22\] (Figs. 14, 16–18):
 //!
 //! 1. `diag` = diagonal of the ground truth's bounding box, `h = diag / 2000`.
 //! 2. Both edge sets are sampled by arc length: every distinct vertex once, plus
@@ -22,7 +22,7 @@
 //! (O(m log m)); each sample's query is O(1) on evenly sampled curves.
 //!
 //! # References
-//! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//! - \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 //!
 //! [`SegmentGrid`]: super::grid
 use super::grid::{lerp, SegmentGrid};

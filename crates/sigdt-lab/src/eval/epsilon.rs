@@ -1,6 +1,6 @@
 //! The sampling density epsilon of a labelled point set, from its ground-truth graph.
 //!
-//! [MOW22] §3.1 measures how well a set samples its curve by `eps = max over x of
+//! \[MOW22\] §3.1 measures how well a set samples its curve by `eps = max over x of
 //! d(x, samples) / lfs(x)` with a planar-graph local feature size (Ruppert's: the radius of
 //! the smallest disk centred at `x` meeting two disjoint features). Only the labelled set is
 //! known here, so `x` runs over the ground-truth polygon. Variants ([`EpsilonVariant`]):
@@ -45,8 +45,8 @@
 //! 64 samples per edge dominate.
 //!
 //! # References
-//! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
-//! - [Rup95] J. Ruppert. A Delaunay refinement algorithm for quality 2-dimensional mesh
+//! - \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//! - \[Rup95\] J. Ruppert. A Delaunay refinement algorithm for quality 2-dimensional mesh
 //!   generation. Journal of Algorithms 18(3), 1995.
 use super::crossing::proper_crossing;
 use super::features::{arc_edges, Features, Terms};

@@ -1,6 +1,6 @@
 //! Exact reconstruction: is the result's undirected edge set the ground truth's?
 //!
-//! `docs/algorithms.md` §4.2 (the operational reading of [MOW22] Table 2): both lists are
+//! `docs/algorithms.md` §4.2 (the operational reading of \[MOW22\] Table 2): both lists are
 //! normalised to `[min, max]` pairs and deduplicated, then compared as sets. A self loop `[i, i]` in the
 //! result is an extra edge (so the result is not exact); one in the ground truth is a missing
 //! edge no result can supply. Indices are not checked against a point count here: the
@@ -10,7 +10,7 @@
 //! O((r + g) log(r + g)) for `r` result and `g` ground-truth edges.
 //!
 //! # References
-//! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//! - \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 use super::input::normalise;
 use sigdt::Edge;
 

@@ -1,6 +1,6 @@
 //! The ground truth as a planar graph of features, and the sampling ratio at a point on it.
 //!
-//! Used by [`epsilon`](super::epsilon). The graph's edges are *arcs*: maximal chains of
+//! Used by [`epsilon`](fn@super::epsilon). The graph's edges are *arcs*: maximal chains of
 //! ground-truth edges between feature vertices (see [`Features::new`]); its vertices are the
 //! arc ends. Two features are disjoint when not adjacent: a vertex and an arc it does not
 //! end, two arcs without a common end, two distinct vertices not joined by an arc

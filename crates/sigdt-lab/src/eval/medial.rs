@@ -1,7 +1,7 @@
 //! Medial points of a polyline: the circumcentres of the Delaunay triangles of its vertices.
 //!
 //! The Voronoi vertices of a dense sample of a smooth curve converge to its medial axis
-//! ([ABE98], the poles of the crust); the data set's generator approximates the medial axis
+//! (\[ABE98\], the poles of the crust); the data set's generator approximates the medial axis
 //! of each smooth arc the same way, from the arc's dense points (data/README.md, "Epsilon").
 //! Here the arc's own samples stand in for the dense points. Fewer than three distinct or
 //! only collinear points have no triangle and so no medial point (a straight arc has
@@ -11,7 +11,7 @@
 //! O(k log k) for `k` points (the triangulation).
 //!
 //! # References
-//! - [ABE98] N. Amenta, M. Bern, D. Eppstein. The crust and the β-skeleton: combinatorial
+//! - \[ABE98\] N. Amenta, M. Bern, D. Eppstein. The crust and the β-skeleton: combinatorial
 //!   curve reconstruction. Graphical Models and Image Processing 60(2), 1998.
 use sigdt::delaunay::Shape;
 use sigdt::Triangulation;

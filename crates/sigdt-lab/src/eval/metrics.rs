@@ -1,10 +1,9 @@
 //! All result metrics at once: exactness, edge differences, distances and area.
 //!
-//! [`evaluate`] validates the input once and runs [`edge_diff`](super::edge_diff),
-//! [`distance_errors`](super::distance_errors) and
-//! [`area_difference`](super::area_difference). The sampling density epsilon
+//! [`evaluate`] validates the input once and runs [`edge_diff`], [`distance_errors`] and
+//! [`area_difference`]. The sampling density epsilon
 //! ([`graph_epsilon`](super::graph_epsilon)) and the graph statistics
-//! ([`overlap`](super::overlap)) depend on the labelled set only, so they are computed
+//! ([`overlap`](fn@super::overlap)) depend on the labelled set only, so they are computed
 //! separately, once per set rather than once per method.
 //!
 //! # Complexity

@@ -1,6 +1,6 @@
 //! How much of the ground truth each proximity graph contains, and how they overlap.
 //!
-//! The statistics of [MOW22] §5 (`docs/algorithms.md` §4.10), for one labelled point set; average
+//! The statistics of \[MOW22\] §5 (`docs/algorithms.md` §4.10), for one labelled point set; average
 //! them over sets yourself (the paper takes the arithmetic mean of per-set percentages):
 //!
 //! | field | formula | paper (mean over 1257 manifold sets) |
@@ -14,7 +14,7 @@
 //!
 //! Each [`Coverage`] also says whether the graph contains the whole ground truth (the paper's
 //! "contained in almost all cases" may mean either). BC₀ is the EMST plus, at every leaf,
-//! its shortest missing Delaunay edge, as in [`connect2d`](crate::baselines::connect2d).
+//! its shortest missing Delaunay edge, as in CONNECT2D (`sigdt`'s `baselines/connect2d.rs`).
 //!
 //! Duplicates: the graphs are built on the distinct points, a duplicate standing for itself
 //! through its lowest-index twin. Ground-truth edges are mapped the same way; edges that
@@ -25,7 +25,7 @@
 //! O(n log n) (the triangulation and the graphs).
 //!
 //! # References
-//! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
+//! - \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 use super::input::{check_edges, check_points, proper_edges};
 use sigdt::delaunay::Shape;
 use sigdt::internals::{eliminate_leaves, emst_mask};

@@ -41,7 +41,7 @@
 //!
 //! # Output
 //! FITCONNECT's edges, loops, paths, left-out points and status, and
-//! [`Vertices::Moved`](crate::Vertices::Moved): every input point's new position (points
+//! [`Vertices::Moved`]: every input point's new position (points
 //! off the curves and their duplicates do not move). Exact scoring uses the edges, RMSE the
 //! moved points.
 //!

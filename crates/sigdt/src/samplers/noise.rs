@@ -7,7 +7,7 @@
 //!   uniform).
 //! - [`lfs_noise`]: each point moves along its curve normal by `(2U − 1)·δ·lfs`, the "lfs
 //!   noise" of `sampling2d` \[OMW21\]; normals and lfs come from
-//!   [`eps_sample_with_frames`](super::eps_sample_with_frames).
+//!   `eps_sample_with_frames` (in `sigdt-lab`).
 //! - [`add_outliers`]: `round(q·n)` points uniform in the bounding box are appended, so the
 //!   ground truth (indices `0..n`) is unchanged and outliers get indices `n..`. They are not
 //!   kept away from the curve.

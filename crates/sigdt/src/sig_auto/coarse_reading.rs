@@ -3,7 +3,7 @@
 //! Noise moves each sample off its curve by some fraction of the sample spacing; once that
 //! fraction nears a quarter, neighbouring samples trade places across the curve, SIGDT
 //! misses curve edges, and the reading breaks into slivers and small loops. The sampling
-//! check ([`check_curves`](crate::result::check_curves)) sees this. Thinning the points to
+//! check ([`check_curves`]) sees this. Thinning the points to
 //! `f` times their spacing leaves the noise the same in length but `f` times smaller
 //! against the new spacing, back within what a sampled curve allows: the coarse points
 //! read as the right curves. The points left out of the coarse reading then go back in,

@@ -482,7 +482,7 @@ fn outnumbered(
     count > run
 }
 
-/// The non-uniformity condition of [MOW22] Theorem 1 for two edges at one sample: the longer
+/// The non-uniformity condition of \[MOW22\] Theorem 1 for two edges at one sample: the longer
 /// is less than twice the shorter (ties allowed, as everywhere in SIG-AUTO).
 pub(crate) fn u_below_2(l1: f64, l2: f64) -> bool {
     l1.max(l2) <= 2.0 * l1.min(l2) * (1.0 + TIE_SLACK)

@@ -7,7 +7,7 @@ use super::state::{Points, State, NONE};
 use crate::geometry::{orient2d, Point};
 
 /// The largest angle at the corner between the directions to where the two chains leave
-/// the neighbourhood disc ([OW18]; the same bound as the sampling condition's).
+/// the neighbourhood disc (\[OW18\]; the same bound as the sampling condition's).
 const MAX_CORNER_DEGREES: f64 = 60.0;
 
 /// A neighbourhood as a sorted list, for membership tests.

@@ -11,7 +11,7 @@ use crate::geometry::Point;
 /// No link.
 pub(crate) const NONE: u32 = u32::MAX;
 
-/// The state of a point ([OW18] §4).
+/// The state of a point (\[OW18\] §4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum State {
     /// Not visited yet.

@@ -2,7 +2,7 @@
 //!
 //! Input is streamed: the edge and `.gtn` readers go line by line through a reused buffer,
 //! the plain reader in batches of blocks of whole lines (parsed in parallel), so memory stays
-//! bounded by a few MiB plus the longest line, which is capped at [`MAX_LINE`] bytes.
+//! bounded by a few MiB plus the longest line, which is capped at [`MAX_LINE`](super::lines::MAX_LINE) bytes.
 //! Everywhere, blank lines are skipped, `#` starts a comment that runs to the end of the
 //! line, and `\r\n` line endings are accepted. Every problem is an [`Error::Parse`] naming
 //! the file and the 1-based line.
