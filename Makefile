@@ -218,12 +218,12 @@ data-non-manifold:
 ## a win and a failure each (SIG-CONNECT2D and SIG-AUTO).
 OUTLINE_PICTURES := mp7_fork8_lfs030_clean mp7_spring11_lfs030_clean \
   pysal_us48_r1_k1_noise025 mp7_HCircle16_lfs030_noise025 \
-  gshhs_island247_smooth_outliers mp7_bat7_uni050_outliers mp7_elephant11_uni050_outliers \
+  gshhs_island247_smooth_outliers mp7_bat7_uni050_outliers mp7_rat04_lfs030_outliers \
   gshhs_arch_dalmatia_smooth_outliers
 REAL_WINS := mp7_octopus16_lfs030_out03 pysal_10740_r167_k1 mp7_Bone20_lfs030_noise0.002 \
   mp7_spring11_lfs030
 REAL_FAILURES := wdb_river6649_k1 gshhs_island81_k1 pysal_chicago77_r37_k1 \
-  mp7_apple11_lfs030_out07 mp7_dog10_lfs030_noise0.002 gshhs_arch_society_k1
+  mp7_bell19_lfs030_out03 mp7_dog10_lfs030_noise0.002 gshhs_arch_society_k1
 ## pictures: the README picture (what `make demo` draws), the steps of docs/steps.md and the
 ## wins and failures of SIG-AUTO in docs/sig-auto.md (from $(DATA)).
 pictures: build py-build
