@@ -1,41 +1,126 @@
 //! Biased randomised insertion order (BRIO) with Hilbert-sorted rounds.
 //!
-//! Amenta, Choi and Rote (*Incremental constructions con BRIO*, SoCG 2003): shuffle the
-//! points, split them into rounds of doubling size, and sort each round along a space-filling
-//! curve. Random rounds keep the expected conflict structure of randomised incremental
-//! construction; the Hilbert order inside a round keeps consecutive insertions close, so a
-//! walk from the previous vertex (`insert_with_hint`) finds the next triangle in O(1)
+//! Amenta, Choi and Rote (*Incremental constructions con BRIO*, SoCG 2003): put each point in
+//! the last round with probability 1/2, in the one before with 1/4, and so on, and sort each
+//! round along a space-filling curve. Random rounds keep the expected conflict structure of
+//! randomised incremental construction; the Hilbert order inside a round keeps consecutive
+//! insertions close, so a walk from the previous vertex finds the next triangle in O(1)
 //! expected steps.
 //!
 //! Why: on curve samples, spade's `bulk_load` and the `delaunator` crate go quadratic, while
 //! BRIO with hints stays near-linear (the measurements are in `docs/algorithms.md` §0.2).
 //!
+//! [`canonical_order`] draws each point's round from a hash of its coordinates and breaks
+//! Hilbert-cell ties by coordinates, so the order depends on the point set alone: the vertex
+//! and triangle numbering that insertion produces is the same for every order of the input.
+//! [`brio_order_within`] (CRUST's second triangulation) shuffles with a fixed seed instead.
+//!
 //! # Complexity
-//! O(n log n) for the sorts; the shuffle uses a fixed seed, so the order (and with it the
-//! triangulation of cocircular points) is the same on every run.
+//! O(n log n) for the sorts.
 
-/// Fixed seed of the shuffle: results are reproducible bit for bit.
+use std::cmp::Ordering;
+
+/// Fixed seed of the shuffle and the coordinate hash: results are reproducible bit for bit.
 const SEED: u64 = 0x5157_4454_2d32_4431;
 /// Rounds smaller than this are merged into the first round.
 const MIN_ROUND: usize = 64;
 /// Bits per axis of the Hilbert grid (2^16 × 2^16 cells, keys fit in 32 bits).
 const HILBERT_BITS: u32 = 16;
 
-/// Reorders `indices` (indices into `points`) into BRIO order, in place.
-pub fn brio_order(points: impl Fn(u32) -> [f64; 2] + Sync + Send, indices: &mut [u32]) {
-    let Some(bbox) = bounding_box(indices.iter().map(|&i| points(i))) else { return };
-    // Keys are computed in the given order (sequential reads of the points when `indices`
-    // is ascending), then shuffled with their indices.
-    let mut keyed: Vec<u64> = crate::parallel::map_slice(indices, |&i| {
-        (u64::from(hilbert_key(points(i), &bbox)) << 32) | u64::from(i)
+/// The insertion order of the points `0..n`: BRIO rounds drawn from a hash of each point's
+/// coordinates, Hilbert order inside a round, ties by coordinates (lexicographic), then by
+/// index (exact duplicates only). A function of the point set alone (module docs).
+pub fn canonical_order(points: impl Fn(u32) -> [f64; 2] + Sync + Send, n: usize) -> Vec<u32> {
+    let Some(bbox) = bounding_box((0..n as u32).map(&points)) else { return Vec::new() };
+    let rounds = round_count(n);
+    let round_of: Vec<u8> = crate::parallel::map_range(n, |i| round_of(points(i as u32), rounds));
+    // Counting sort by round (stable, so each round holds ascending indices), then a sort of
+    // `(key << 32) | index` inside each round.
+    let mut start = vec![0usize; usize::from(rounds) + 1];
+    for &r in &round_of {
+        start[usize::from(r) + 1] += 1;
+    }
+    for r in 0..usize::from(rounds) {
+        start[r + 1] += start[r];
+    }
+    let mut keyed = vec![0u64; n];
+    let mut fill = start.clone();
+    for (i, &r) in round_of.iter().enumerate() {
+        let p = points(i as u32);
+        keyed[fill[usize::from(r)]] = (u64::from(hilbert_key(p, &bbox)) << 32) | i as u64;
+        fill[usize::from(r)] += 1;
+    }
+    drop(round_of);
+    for r in 0..usize::from(rounds) {
+        let round = &mut keyed[start[r]..start[r + 1]];
+        crate::parallel::sort_unstable(round);
+        break_cell_ties(round, &points);
+    }
+    keyed.into_iter().map(|k| k as u32).collect()
+}
+
+/// The points `0..n` along the Hilbert curve over their bounding box, ties by coordinates
+/// (lexicographic), then by index: a function of the point set alone, spatially coherent.
+pub fn hilbert_order(points: impl Fn(u32) -> [f64; 2] + Sync + Send, n: usize) -> Vec<u32> {
+    let Some(bbox) = bounding_box((0..n as u32).map(&points)) else { return Vec::new() };
+    let mut keyed: Vec<u64> = crate::parallel::map_range(n, |i| {
+        (u64::from(hilbert_key(points(i as u32), &bbox)) << 32) | i as u64
     });
-    sort_rounds(&mut keyed);
-    for (slot, k) in indices.iter_mut().zip(&keyed) {
-        *slot = *k as u32;
+    crate::parallel::sort_unstable(&mut keyed);
+    break_cell_ties(&mut keyed, &points);
+    keyed.into_iter().map(|k| k as u32).collect()
+}
+
+/// Inside each run of equal Hilbert keys, orders the points by coordinates, then index.
+fn break_cell_ties(round: &mut [u64], points: &impl Fn(u32) -> [f64; 2]) {
+    let mut a = 0;
+    while a < round.len() {
+        let cell = round[a] >> 32;
+        let b = a + round[a..].iter().take_while(|&&k| k >> 32 == cell).count();
+        if b - a > 1 {
+            round[a..b].sort_unstable_by(|&j, &k| {
+                lexicographic(points(j as u32), points(k as u32)).then(j.cmp(&k))
+            });
+        }
+        a = b;
     }
 }
 
-/// [`brio_order`] with the Hilbert grid laid over the bounding box of `extent` instead of
+/// Lexicographic order of coordinates, `-0.0` and `0.0` alike (they are the same point).
+fn lexicographic(p: [f64; 2], q: [f64; 2]) -> Ordering {
+    p[0].partial_cmp(&q[0])
+        .unwrap_or(Ordering::Equal)
+        .then(p[1].partial_cmp(&q[1]).unwrap_or(Ordering::Equal))
+}
+
+/// How many rounds `n` points take: the first holds about `n / 2^(rounds - 1)`, at least
+/// [`MIN_ROUND`] expected.
+fn round_count(n: usize) -> u8 {
+    let mut rounds = 1;
+    while n >> rounds >= MIN_ROUND && rounds < 32 {
+        rounds += 1;
+    }
+    rounds
+}
+
+/// The round of a point, `0` the first: the last with probability 1/2, the one before with
+/// 1/4, and so on, drawn from a hash of the coordinates (`-0.0` hashed as `0.0`).
+fn round_of(p: [f64; 2], rounds: u8) -> u8 {
+    let bits = |x: f64| (x + 0.0).to_bits();
+    let hash = mix(mix(SEED ^ bits(p[0])) ^ bits(p[1]));
+    let depth = (hash.trailing_zeros() as u8).min(rounds - 1);
+    rounds - 1 - depth
+}
+
+/// SplitMix64's finaliser.
+fn mix(mut z: u64) -> u64 {
+    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// BRIO with a fixed shuffle, the Hilbert grid laid over the bounding box of `extent` instead of
 /// the points' own; points outside it (or not finite) are clamped to its border cells. CRUST
 /// uses it to order Voronoi vertices on the samples' grid, unspoilt by far-away centres.
 pub fn brio_order_within(
@@ -216,18 +301,36 @@ mod tests {
     }
 
     #[test]
-    fn order_is_a_deterministic_permutation() {
+    fn order_is_a_permutation_that_depends_on_the_points_alone() {
         let pts: Vec<[f64; 2]> =
             (0..1000).map(|i| [(i as f64).sin(), (i as f64 * 0.7).cos()]).collect();
-        let run = || {
-            let mut idx: Vec<u32> = (0..1000).collect();
-            brio_order(|i| pts[i as usize], &mut idx);
-            idx
-        };
-        let a = run();
-        assert_eq!(a, run());
-        let mut sorted = a.clone();
+        let order = canonical_order(|i| pts[i as usize], pts.len());
+        let mut sorted = order.clone();
         sorted.sort();
         assert_eq!(sorted, (0..1000).collect::<Vec<u32>>());
+        // Reversed input: the same points in the same order.
+        let reversed: Vec<[f64; 2]> = pts.iter().rev().copied().collect();
+        let again = canonical_order(|i| reversed[i as usize], pts.len());
+        let positions = |o: &[u32], p: &[[f64; 2]]| -> Vec<[f64; 2]> {
+            o.iter().map(|&i| p[i as usize]).collect()
+        };
+        assert_eq!(positions(&order, &pts), positions(&again, &reversed));
+    }
+
+    #[test]
+    fn rounds_double() {
+        assert_eq!(round_count(100), 1);
+        assert_eq!(round_count(128), 2);
+        assert_eq!(round_count(1 << 20), 15);
+        let rounds = round_count(1 << 16);
+        let mut sizes = vec![0usize; usize::from(rounds)];
+        for i in 0..1 << 16 {
+            sizes[usize::from(round_of([f64::from(i), 0.5], rounds))] += 1;
+        }
+        // The last round holds about half the points, the one before a quarter.
+        let n = f64::from(1 << 16);
+        let last = sizes[sizes.len() - 1] as f64 / n;
+        let before = sizes[sizes.len() - 2] as f64 / n;
+        assert!((last - 0.5).abs() < 0.02 && (before - 0.25).abs() < 0.02, "{sizes:?}");
     }
 }

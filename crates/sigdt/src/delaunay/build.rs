@@ -1,6 +1,6 @@
 //! Building a [`Triangulation`]: hygiene, degenerate shapes, then the points copied once into
 //! BRIO order and inserted one by one into the flat arrays (module `incremental`).
-use super::brio::brio_order;
+use super::brio::canonical_order;
 use super::hygiene::Scaling;
 use super::incremental::Dt;
 use super::{Shape, Triangulation, EMPTY};
@@ -26,28 +26,37 @@ impl Triangulation {
     }
 
     fn build(points: Cow<'_, [Point]>) -> Result<Triangulation> {
+        // Half-edges are numbered in `u32` (`EMPTY` excluded): at most 6 per point.
+        let max = EMPTY as usize / 6;
+        if points.len() > max {
+            return Err(Error::TooManyPoints { got: points.len(), max });
+        }
         let scaling = Scaling::for_points(&points)?;
         let scaled = |i: u32| scaling.apply(points[i as usize]);
-        match first_triangle(points.len(), scaled) {
-            Some(seed) => proper(points, scaling, seed),
-            None => Ok(on_a_line(points.len(), scaled, scaling)),
+        let mut order = canonical_order(scaled, points.len());
+        if put_first_triangle_first(&mut order, scaled) {
+            proper(points, scaling, order)
+        } else {
+            Ok(on_a_line(points.len(), scaled, scaling))
         }
     }
 }
 
-/// The first three input points, in input order, that span a triangle: the first point, the
-/// first point different from it, and the first point off the line through both. `None` if
-/// all points are collinear (or fewer than three are distinct).
+/// Moves to the front of `order` the first three points in it that span a triangle: the
+/// first point, the first point different from it, and the first point off the line through
+/// both; the rest keep their order. `false` if all points are collinear (or fewer than three
+/// are distinct).
 ///
-/// Inserting these first matters: spade is quadratic while all its vertices are collinear.
-fn first_triangle(n: usize, p: impl Fn(u32) -> Point) -> Option<[u32; 3]> {
-    if n < 3 {
-        return None;
-    }
-    let a = 0;
-    let b = (1..n as u32).find(|&i| p(i) != p(a))?;
-    let c = (b + 1..n as u32).find(|&i| orient2d(p(a), p(b), p(i)) != 0.0)?;
-    Some([a, b, c])
+/// Inserting these first matters: spade's insertion is quadratic while all its vertices are
+/// collinear.
+fn put_first_triangle_first(order: &mut [u32], p: impl Fn(u32) -> Point) -> bool {
+    let Some(&a) = order.first() else { return false };
+    let Some(b) = (1..order.len()).find(|&k| p(order[k]) != p(a)) else { return false };
+    let off_line = |&k: &usize| orient2d(p(a), p(order[b]), p(order[k])) != 0.0;
+    let Some(c) = (b + 1..order.len()).find(off_line) else { return false };
+    order[1..=b].rotate_right(1);
+    order[2..=c].rotate_right(1);
+    true
 }
 
 /// Collinear input and fewer than three distinct points: vertices sorted along the line
@@ -84,18 +93,8 @@ fn on_a_line(n: usize, p: impl Fn(u32) -> Point, scaling: Scaling) -> Triangulat
     }
 }
 
-fn proper(input: Cow<'_, [Point]>, scaling: Scaling, seed: [u32; 3]) -> Result<Triangulation> {
+fn proper(input: Cow<'_, [Point]>, scaling: Scaling, order: Vec<u32>) -> Result<Triangulation> {
     let n = input.len();
-    // Half-edges are numbered in `u32` (`EMPTY` excluded): at most 6 per point.
-    let max = EMPTY as usize / 6;
-    if n > max {
-        return Err(Error::TooManyPoints { got: n, max });
-    }
-    // The insertion order: the seed, then the rest in BRIO order.
-    let mut order: Vec<u32> = Vec::with_capacity(n);
-    order.extend_from_slice(&seed);
-    order.extend((0..n as u32).filter(|i| !seed.contains(i)));
-    brio_order(|i| scaling.apply(input[i as usize]), &mut order[3..]);
     // Reorder once: the points in insertion order, read sequentially from here on.
     let points = crate::parallel::map_slice(&order, |&i| scaling.apply(input[i as usize]));
     drop(input);
@@ -148,28 +147,11 @@ fn proper(input: Cow<'_, [Point]>, scaling: Scaling, seed: [u32; 3]) -> Result<T
 
 #[cfg(test)]
 mod tests {
-    use super::super::{next, Shape, Triangulation, EMPTY};
-    use crate::geometry::orient2d;
+    use super::super::check::check_delaunay;
+    use super::super::{Shape, Triangulation};
 
     fn check(dt: &Triangulation) {
-        for h in 0..dt.num_halfedges() as u32 {
-            let t = dt.twin(h);
-            if t != EMPTY {
-                assert_eq!(dt.twin(t), h);
-                assert_eq!(dt.origin(t), dt.dest(h));
-                assert_eq!(dt.dest(t), dt.origin(h));
-            }
-        }
-        for t in 0..dt.num_triangles() as u32 {
-            let [a, b, c] = [3 * t, 3 * t + 1, 3 * t + 2].map(|h| dt.point(dt.origin(h)));
-            assert!(orient2d(a, b, c) > 0.0, "triangle {t} not counter-clockwise");
-        }
-        for v in 0..dt.num_vertices() as u32 {
-            for h in dt.outgoing(v) {
-                assert_eq!(dt.origin(h), v);
-                assert_eq!(dt.origin(next(next(h))), dt.dest(next(h)));
-            }
-        }
+        check_delaunay(dt).unwrap();
     }
 
     #[test]

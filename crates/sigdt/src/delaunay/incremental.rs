@@ -4,10 +4,11 @@
 //! (`delaunay_core/triangulation_ext.rs` and `dcel_operations.rs`): the same greedy walk to
 //! the nearest vertex and the same exact location, the same splits of a face or an edge, the
 //! same growth of the convex hull and the same flips in the same order, with the exact
-//! orient2d and incircle of the `robust` crate. It also numbers faces as spade does and keeps
-//! each face's first edge where spade keeps it, so the arrays it fills are the ones spade's
-//! export used to produce, bit for bit (`docs/algorithms.md` §0.2), while holding about a
-//! third of the memory (no vertex, edge and face records, no export).
+//! orient2d of the `robust` crate. It numbers faces as spade does, while holding about a
+//! third of spade's memory (no vertex, edge and face records, no export). One departure
+//! changes results: the flip test is the perturbed incircle ([`super::perturbation`]), so on
+//! cocircular points the triangulation is the canonical one, not spade's
+//! (`docs/algorithms.md` §0.2).
 //!
 //! # Representation
 //! Face `f` (spade's inner face `f + 1`) owns slots `3f..3f+3`: `tri[s]` is the origin of the
@@ -25,7 +26,7 @@
 //!
 //! # Complexity
 //! As spade's: O(n log n) expected in BRIO order with the previous vertex as hint.
-use super::EMPTY;
+use super::{perturbation, EMPTY};
 use crate::geometry::Point;
 use crate::graph::word_bit;
 use robust::Coord;
@@ -855,8 +856,8 @@ impl Dt {
             let v3 = self.from(self.prev(e));
             let (v0, v1) = (self.from(e), self.to(e));
             // contained_in_circumference(v2, v1, v0, v3) = incircle(v0, v1, v2, v3) < 0.
-            let [p0, p1, p2, p3] = [v0, v1, v2, v3].map(|v| coord(self.pos(v)));
-            if robust::incircle(p0, p1, p2, p3) < 0.0 {
+            let [p0, p1, p2, p3] = [v0, v1, v2, v3].map(|v| self.pos(v));
+            if perturbation::incircle(p0, p1, p2, p3) < 0.0 {
                 let (rn, rp) = (self.next(r), self.prev(r));
                 self.stack.push(rn);
                 self.stack.push(rp);

@@ -1,9 +1,11 @@
-//! The Delaunay triangulation, seen through flat index arrays.
+//! The canonical Delaunay triangulation, seen through flat index arrays.
 //!
 //! The points are copied once into BRIO order (module `brio`) and inserted one by one straight
 //! into the representation every algorithm here uses (module `incremental`, a port of
-//! spade's insertion that fills the same arrays spade's export did; `docs/algorithms.md`
-//! §0.2):
+//! spade's insertion). Its incircle test is symbolically perturbed (module `perturbation`),
+//! so cocircular points get one triangulation, and the insertion order depends on the point
+//! set alone: the same points give the same arrays in every input order and on every thread
+//! count (`docs/algorithms.md` §0.2; module `check` is the invariant checker):
 //!
 //! - `triangles[3t..3t+3]`: the vertices of triangle `t`, counter-clockwise;
 //! - half-edge `h` runs from `triangles[h]` to `triangles[next(h)]` and has triangle `h / 3`
@@ -12,8 +14,8 @@
 //! - `vertex_halfedge[v]`: one outgoing half-edge of `v`, for hull vertices the one on the
 //!   hull, so that rotating counter-clockwise from it visits every triangle at `v`.
 //!
-//! Vertices are the *distinct* input points, numbered in insertion order (spatially
-//! coherent, which keeps the algorithms cache-friendly); [`Triangulation::input_index`] maps
+//! Vertices are the *distinct* input points, numbered in insertion order (canonical and
+//! spatially coherent, which keeps the algorithms cache-friendly); [`Triangulation::input_index`] maps
 //! them back. Exact duplicates are merged into their lowest-index representative and listed
 //! in [`Triangulation::duplicates`]. All points collinear, or fewer than three distinct
 //! points, give a triangulation without triangles ([`Shape`]).
@@ -24,8 +26,10 @@
 
 pub(crate) mod brio;
 mod build;
+pub(crate) mod check;
 pub(crate) mod hygiene;
 mod incremental;
+pub(crate) mod perturbation;
 
 use crate::geometry::Edge;
 use crate::geometry::{distance, Point};

@@ -14,7 +14,9 @@ pub use crate::baselines::{
 pub use crate::connect::boundary::{Boundary, VertexClass};
 pub use crate::connect::extract::{loop_edges, loops};
 pub use crate::connect::{inflate::inflate, sculpt::sculpt};
+pub use crate::delaunay::check::check_delaunay;
 pub use crate::delaunay::hygiene::Scaling;
+pub use crate::delaunay::perturbation::incircle as perturbed_incircle;
 pub use crate::error::find_by_name;
 pub use crate::geometry::{distance, orient2d, segments_cross, squared_distance, turning};
 pub use crate::graph::{chains, Chain, EdgeMask, UnionFind};

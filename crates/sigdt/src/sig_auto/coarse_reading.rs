@@ -10,8 +10,9 @@
 //! each at its place along the nearest coarse edge.
 //!
 //! 1. `s` = the median nearest-neighbour distance. For `f` in [`THINNING`] (2, 3, 4): keep
-//!    a subset of points at least `f · s` apart (greedy, in vertex order: a Poisson-disk
-//!    sample), and read it with SIG-AUTO.
+//!    a subset of points at least `f · s` apart (greedy along the Hilbert curve: a
+//!    Poisson-disk sample that depends on the point set alone, spaced more evenly along a
+//!    curve than a random order gives), and read it with SIG-AUTO.
 //! 2. The first coarse reading that is closed curves only (status `polygon` or `polygons`)
 //!    and passes the sampling check on its own points is used. Loops too small for a
 //!    sampled curve that hold only points the fine reading left out as outliers are dropped
@@ -37,6 +38,7 @@
 //! # Complexity
 //! O(n log n) per level (three levels at most, on fewer points each), plus O(n) per pass
 //! of crossing repair (at most [`MAX_REPAIR_PASSES`]).
+use crate::delaunay::brio::hilbert_order;
 use std::collections::HashMap;
 
 use super::{sig_auto_with, Steps};
@@ -161,11 +163,11 @@ impl<'a> Cells<'a> {
     }
 }
 
-/// Vertices of `dt` at least `radius` apart, chosen greedily in vertex order.
+/// Vertices of `dt` at least `radius` apart, chosen greedily along the Hilbert curve.
 fn thin(dt: &Triangulation, radius: f64) -> Vec<u32> {
     let mut cells = Cells::new(dt, radius);
     let mut kept = Vec::new();
-    for v in 0..dt.num_vertices() as u32 {
+    for v in hilbert_order(|v| dt.point(v), dt.num_vertices()) {
         if !cells.has_near(v) {
             cells.add(v);
             kept.push(v);
@@ -371,6 +373,24 @@ mod tests {
                 [r * a.cos(), r * a.sin()]
             })
             .collect()
+    }
+
+    /// A coarse loop too small for a sampled curve is dropped, and its points stay
+    /// outliers, only when the fine reading had left every one of them out already.
+    #[test]
+    fn small_coarse_loops_of_known_outliers_are_dropped() {
+        let small_loops = Finding { kind: FindingKind::SmallLoops, count: 1, worst: 3.0, at: 7 };
+        let curve: Vec<u32> = (10..40).collect();
+        let loops = || vec![vec![7, 8, 9], curve.clone()];
+        let (kept, settled) = passing_loops(loops(), &[small_loops], &[7, 8, 9, 50]).unwrap();
+        assert_eq!((kept, settled), (vec![curve.clone()], vec![7, 8, 9]));
+        // One of the small loop's points is a curve point: the level fails.
+        assert!(passing_loops(loops(), &[small_loops], &[7, 9]).is_none());
+        // Another failing finding: the level fails whatever the loops.
+        let sliver = Finding { kind: FindingKind::DoublesBack, count: 1, worst: 170.0, at: 12 };
+        assert!(passing_loops(loops(), &[small_loops, sliver], &[7, 8, 9]).is_none());
+        // Nothing fails: every loop is kept.
+        assert_eq!(passing_loops(loops(), &[], &[]).unwrap().0.len(), 2);
     }
 
     #[test]

@@ -1,35 +1,61 @@
-//! sigdt's own incremental Delaunay insertion (`delaunay/incremental.rs`) against spade's:
-//! on random, degenerate (duplicates, collinear runs, grids), exactly cocircular, nearly
-//! cocircular and huge-offset inputs, `Triangulation::new` fills the same arrays, bit for
-//! bit, as spade's insertion in the same order followed by the export sigdt used before
-//! (`sigdt::internals::spade_reference`). The fuzz target `delaunay` checks the same on
-//! arbitrary inputs (`docs/fuzzing.md`).
+//! The exactness suite of sigdt's Delaunay triangulation (`src/delaunay/`): on random,
+//! degenerate (duplicates, collinear runs, grids), exactly cocircular, nearly cocircular and
+//! huge-offset inputs,
 //!
+//! - the triangulation is valid and Delaunay under the symbolic perturbation, checked
+//!   exactly: twins agree, triangles are counter-clockwise, the hull is convex, every edge
+//!   with two triangles passes the perturbed incircle test (locally Delaunay under one
+//!   lifting is globally Delaunay), and the Euler counts hold;
+//! - it is canonical: the same arrays for the input shuffled and reversed, and on a pool of
+//!   1, 2 and 3 threads;
+//! - where no four points are cocircular, its edges are spade's
+//!   (`sigdt::internals::spade_reference`).
+//!
+//! The fuzz target `delaunay` checks the same on arbitrary inputs (`docs/fuzzing.md`).
 //! Explore with e.g. `PROPTEST_RNG_SEED=1 PROPTEST_CASES=5000 cargo test --release --test
-//! spade_identity`.
+//! canonical_delaunay`.
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
-use sigdt::internals::{spade_reference, FlatArrays};
+use sigdt::internals::{check_delaunay, spade_reference, FlatArrays};
 use sigdt::samplers::{random_closed_curve, spiral_band, Rng};
 use sigdt::{Point, Triangulation};
 
-/// Checks one input: same error, same degenerate verdict, same arrays.
-fn same_as_spade(points: &[Point]) {
-    let ours = Triangulation::new(points);
-    let reference = spade_reference(points);
-    match (ours, reference) {
-        (Err(a), Err(b)) => assert_eq!(a.to_string(), b.to_string()),
-        (Ok(dt), Ok(None)) => assert_eq!(dt.num_triangles(), 0, "spade found no triangle"),
-        (Ok(dt), Ok(Some(reference))) => {
-            assert!(dt.num_triangles() > 0);
-            let ours = FlatArrays::of(&dt);
-            assert_eq!(ours.points, reference.points, "points");
-            assert_eq!(ours.input_index, reference.input_index, "input_index");
-            assert_eq!(ours.triangles, reference.triangles, "triangles");
-            assert_eq!(ours.halfedges, reference.halfedges, "halfedges");
-        }
-        (a, b) => panic!("ours {:?}, spade {:?}", a.map(|dt| dt.num_triangles()), b.is_ok()),
+/// Checks one input: valid, Delaunay under the perturbation, canonical; and, when
+/// `unique` (no four points cocircular), spade's edges.
+fn check(points: &[Point], unique: bool) {
+    let Ok(dt) = Triangulation::new(points) else {
+        // The same error whatever the order.
+        let reversed: Vec<Point> = points.iter().rev().copied().collect();
+        assert!(Triangulation::new(&reversed).is_err());
+        return;
+    };
+    check_delaunay(&dt).unwrap();
+    let arrays = FlatArrays::of(&dt);
+    for seed in [1, 2] {
+        let mut order: Vec<usize> = (0..points.len()).collect();
+        Rng::new(seed).shuffle(&mut order);
+        let shuffled: Vec<Point> = order.iter().map(|&i| points[i]).collect();
+        let other = FlatArrays::of(&Triangulation::new(&shuffled).unwrap());
+        assert_same_triangulation(&arrays, &other, "shuffled");
     }
+    for threads in [1, 2, 3] {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        let other = pool.install(|| FlatArrays::of(&Triangulation::new(points).unwrap()));
+        assert_eq!(arrays, other, "{threads} threads");
+    }
+    if unique {
+        match spade_reference(points).unwrap() {
+            None => assert_eq!(dt.num_triangles(), 0, "spade found no triangle"),
+            Some(edges) => assert_eq!(dt.edges(), edges, "spade's edges"),
+        }
+    }
+}
+
+/// The same vertex positions, triangles and twins (input indices differ with the order).
+fn assert_same_triangulation(a: &FlatArrays, b: &FlatArrays, what: &str) {
+    assert_eq!(a.points, b.points, "{what}: points");
+    assert_eq!(a.triangles, b.triangles, "{what}: triangles");
+    assert_eq!(a.halfedges, b.halfedges, "{what}: halfedges");
 }
 
 /// Points on a circle of radius 5, 25 or 65 with integer coordinates (exactly cocircular).
@@ -119,52 +145,54 @@ proptest! {
     #![proptest_config(config())]
 
     #[test]
-    fn programs_triangulate_as_spade(
+    fn programs_triangulate_canonically(
         ops in prop::collection::vec(op(), 0..120),
         scale in prop_oneof![Just(1.0), Just(1e-300), Just(1e300), Just(3.0e-7), Just(1e9)],
         offset in prop_oneof![
             Just([0.0, 0.0]), Just([1e9, -1e9]), Just([1e15, 3e15]), Just([-1e17, 1e17]),
         ],
     ) {
-        same_as_spade(&program(&ops, scale, offset));
+        check(&program(&ops, scale, offset), false);
     }
 
     #[test]
     fn random_points_triangulate_as_spade(seed in any::<u64>(), n in 0usize..2000) {
+        // Random doubles: four cocircular points have probability zero.
         let mut rng = Rng::new(seed);
         let pts: Vec<Point> = (0..n).map(|_| [rng.uniform(), rng.uniform()]).collect();
-        same_as_spade(&pts);
+        check(&pts, true);
     }
 }
 
 #[test]
-fn cocircular_sets_triangulate_as_spade() {
+fn cocircular_sets_triangulate_canonically() {
     for r in [5, 25, 65] {
         let mut pts = circle_points(r);
-        same_as_spade(&pts);
+        check(&pts, false);
         pts.push([0.0, 0.0]);
-        same_as_spade(&pts);
+        check(&pts, false);
         // Four circles of the same radius side by side, sharing points.
         let shifted: Vec<Point> = pts
             .iter()
             .flat_map(|p| [0.0, r as f64, 2.0 * r as f64].map(|d| [p[0] + d, p[1] + d / 2.0]))
             .collect();
-        same_as_spade(&shifted);
+        check(&shifted, false);
     }
 }
 
 #[test]
 fn curve_samples_triangulate_as_spade() {
+    // Samples of smooth random curves and of the spiral band in general position.
     for n in [3, 10, 100, 1000, 20_000] {
-        same_as_spade(&random_closed_curve(1, n).points);
-        same_as_spade(&random_closed_curve(2, n).shuffled(3).points);
-        same_as_spade(&spiral_band(n).points);
-        same_as_spade(&spiral_band(n).shuffled(7).points);
+        check(&random_closed_curve(1, n).points, true);
+        check(&random_closed_curve(2, n).shuffled(3).points, true);
+        check(&spiral_band(n).points, true);
+        check(&spiral_band(n).shuffled(7).points, true);
     }
 }
 
 #[test]
-fn grids_with_duplicates_triangulate_as_spade() {
+fn grids_with_duplicates_triangulate_canonically() {
     let mut pts: Vec<Point> = Vec::new();
     for i in 0..60 {
         for j in 0..40 {
@@ -173,22 +201,24 @@ fn grids_with_duplicates_triangulate_as_spade() {
     }
     let copy = pts.clone();
     pts.extend(copy.iter().rev());
-    same_as_spade(&pts);
+    check(&pts, false);
     let offset: Vec<Point> = pts.iter().map(|p| [p[0] + 1e15, p[1] - 1e15]).collect();
-    same_as_spade(&offset);
+    check(&offset, false);
 }
 
-/// Fuzz find (`delaunay` target, minimised from 156 points): the first point after the seed
-/// lies outside the hull, nearly on the line of the seed's long edge. The walk started at
-/// vertex 0 instead of spade's hint, the seed's last vertex, and found another hull edge to
-/// grow from: the same triangles, numbered differently.
+/// Fuzz find (`delaunay` target, minimised from 156 points, when it compared with spade's
+/// arrays): a point outside the hull, nearly on the line of a long hull edge, and
+/// duplicates.
 #[test]
 fn near_collinear_hull_growth() {
-    same_as_spade(&[
-        [0.0, 0.0],
-        [-1.0, 98.0],
-        [0.0, 0.0],
-        [-1.0000000000000002, 97.99999999999999],
-        [-24.500000000000007, 2400.9999999999995],
-    ]);
+    check(
+        &[
+            [0.0, 0.0],
+            [-1.0, 98.0],
+            [0.0, 0.0],
+            [-1.0000000000000002, 97.99999999999999],
+            [-24.500000000000007, 2400.9999999999995],
+        ],
+        false,
+    );
 }
