@@ -31,14 +31,26 @@ pub fn minimum_spanning_forest(dt: &Triangulation, keep: impl Fn(u32) -> bool) -
 /// The half-edges `edges` sorted by `(length, lower input index, higher input index)`, the
 /// order in which [`kruskal`] must see them.
 pub(crate) fn sorted_by_length(dt: &Triangulation, edges: impl Iterator<Item = u32>) -> Vec<u32> {
-    let mut keyed: Vec<(u64, u32, u32, u32)> = edges
-        .map(|h| {
-            let (a, b) = (dt.input_index(dt.origin(h)) as u32, dt.input_index(dt.dest(h)) as u32);
-            (length_key(dt, h), a.min(b), a.max(b), h)
-        })
-        .collect();
+    // One 128-bit key a half-edge sorts fastest; equal lengths, rare but for lattices, are
+    // then put in input-index order run by run.
+    let mut keyed: Vec<u128> =
+        edges.map(|h| u128::from(length_key(dt, h)) << 64 | u128::from(h)).collect();
     keyed.sort_unstable();
-    keyed.into_iter().map(|k| k.3).collect()
+    let pair = |k: &u128| {
+        let h = *k as u32;
+        let (a, b) = (dt.input_index(dt.origin(h)), dt.input_index(dt.dest(h)));
+        (a.min(b), a.max(b))
+    };
+    let mut start = 0;
+    while start < keyed.len() {
+        let length = keyed[start] >> 64;
+        let end = start + keyed[start..].iter().take_while(|&&k| k >> 64 == length).count();
+        if end - start > 1 {
+            keyed[start..end].sort_unstable_by_key(pair);
+        }
+        start = end;
+    }
+    keyed.into_iter().map(|k| k as u32).collect()
 }
 
 /// A key that sorts edges by length: the bits of the squared length (non-negative, so they
@@ -50,8 +62,17 @@ fn length_key(dt: &Triangulation, h: u32) -> u64 {
 /// Kruskal's algorithm over half-edges given in [`sorted_by_length`] order: the forest's
 /// half-edges, in that order.
 pub(crate) fn kruskal(dt: &Triangulation, sorted: impl IntoIterator<Item = u32>) -> Vec<u32> {
+    kruskal_with_sets(dt, sorted).0
+}
+
+/// [`kruskal`], and the disjoint sets it ends with: the forest's trees.
+pub(crate) fn kruskal_with_sets(
+    dt: &Triangulation,
+    sorted: impl IntoIterator<Item = u32>,
+) -> (Vec<u32>, UnionFind) {
     let mut uf = UnionFind::new(dt.num_vertices());
-    sorted.into_iter().filter(|&h| uf.union(dt.origin(h), dt.dest(h))).collect()
+    let forest = sorted.into_iter().filter(|&h| uf.union(dt.origin(h), dt.dest(h))).collect();
+    (forest, uf)
 }
 
 /// Merges two lists in [`sorted_by_length`] order into one.

@@ -53,7 +53,12 @@ pub fn sigdt_mask(dt: &Triangulation) -> EdgeMask {
 /// are branch-free: the test keeps about every other edge, and branching on it mispredicted
 /// that often.
 pub(crate) fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
-    let r = nearest_vertex_distances(dt);
+    sigdt_with_degrees_for(dt, &nearest_vertex_distances(dt))
+}
+
+/// [`sigdt_with_degrees`] given every vertex's nearest-neighbour distance `r` (as
+/// [`nearest_vertex_distances`] gives it), for callers that need `r` too.
+pub(crate) fn sigdt_with_degrees_for(dt: &Triangulation, r: &[f64]) -> (EdgeMask, Vec<u32>) {
     let is_sig = |h: u32| {
         let (a, b) = (dt.origin(h), dt.dest(h));
         let reach = (r[a as usize] + r[b as usize]) * (1.0 + TIE_SLACK);

@@ -43,18 +43,17 @@
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, segments_cross};
 use crate::graph::UnionFind;
-use crate::proximity::nearest::nearest_vertex_distances;
 use crate::result::{LONG_EDGE_RATIO, MIN_LOOP_POINTS};
 use std::collections::HashMap;
 
 /// The isolated pieces of `dt`: points sampled far more coarsely than a curve beside them,
 /// fewer than [`MIN_LOOP_POINTS`] or scattered (module docs); each ascending, the pieces by
-/// their lowest vertex.
-pub(super) fn isolated_pieces(dt: &Triangulation) -> Vec<Vec<u32>> {
+/// their lowest vertex. `spacing` is every vertex's nearest-neighbour distance
+/// ([`nearest_vertex_distances`](crate::proximity::nearest::nearest_vertex_distances)).
+pub(super) fn isolated_pieces(dt: &Triangulation, spacing: &[f64]) -> Vec<Vec<u32>> {
     let n = dt.num_vertices();
     let neighbours = |v: u32| dt.incident(v).map(move |h| dt.other(h, v));
     let length = |a: u32, b: u32| distance(dt.point(a), dt.point(b));
-    let spacing = nearest_vertex_distances(dt);
     // Pieces: the components of the linking edges.
     let mut sets = UnionFind::new(n);
     let mut merges = 0;
@@ -401,6 +400,7 @@ fn along(dt: &Triangulation, a: u32, b: u32, points: &[u32]) -> Option<Vec<u32>>
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::proximity::nearest::nearest_vertex_distances;
     use crate::Point;
 
     /// A circle of `n` samples of radius 1 about the origin.
@@ -412,7 +412,7 @@ mod tests {
     /// The pieces of `points` as input indices.
     fn pieces(points: &[Point]) -> Vec<Vec<usize>> {
         let dt = Triangulation::new(points).unwrap();
-        let mut pieces: Vec<Vec<usize>> = isolated_pieces(&dt)
+        let mut pieces: Vec<Vec<usize>> = isolated_pieces(&dt, &nearest_vertex_distances(&dt))
             .iter()
             .map(|piece| {
                 let mut p: Vec<usize> = piece.iter().map(|&v| dt.input_index(v)).collect();
@@ -480,7 +480,7 @@ mod tests {
         points.push([5.0, -1.0]);
         let dt = Triangulation::new(&points).unwrap();
         let v = |i: usize| (0..dt.num_vertices() as u32).find(|&v| dt.input_index(v) == i).unwrap();
-        let found: Vec<Vec<u32>> = isolated_pieces(&dt);
+        let found: Vec<Vec<u32>> = isolated_pieces(&dt, &nearest_vertex_distances(&dt));
         let (top, outlier) = (vec![v(111), v(112)], vec![v(n)]);
         let mut top_sorted = top.clone();
         top_sorted.sort_unstable();

@@ -98,6 +98,7 @@ mod wired_outliers;
 
 use crate::delaunay::Triangulation;
 use crate::geometry::distance;
+use crate::proximity::nearest::nearest_vertex_distances;
 use crate::proximity::sigdt::TIE_SLACK;
 use crate::result::{
     degenerate_result, diagnose, from_vertex_pairs, inside_left_out, Finding, FindingKind, LeftOut,
@@ -308,14 +309,15 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
                 Read { pairs: sub.line_edges().collect(), inside: Vec::new(), stats: line.stats }
             }
             None => {
+                let spacing = nearest_vertex_distances(sub);
                 if round == 0 && steps.isolated {
-                    isolated = isolated::isolated_pieces(dt);
+                    isolated = isolated::isolated_pieces(dt, &spacing);
                 }
                 // Isolated pieces are left out first; the forests are built only without them.
                 let (found, forests) = if round == 0 && !isolated.is_empty() {
                     (isolated.concat(), None)
                 } else {
-                    let forests = Forests::new(sub);
+                    let forests = Forests::new(sub, &spacing);
                     let far_off = round + 1 < MAX_ROUNDS && steps.branch_outliers;
                     let found =
                         if far_off { branches_far_off(sub, &forests, steps) } else { Vec::new() };
@@ -398,11 +400,11 @@ fn branches_far_off(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Vec
     let tree = &forests.sigdt2;
     let mut found = Vec::new();
     for (vertices, branched) in forests.components() {
-        if branched {
+        if *branched {
             let neighbours = |v: u32| tree.neighbours(v).to_vec();
-            found.extend(outliers::branch_outliers(dt, &vertices, neighbours, steps));
+            found.extend(outliers::branch_outliers(dt, vertices, neighbours, steps));
         } else {
-            found.extend(outliers::chain_end_outliers(dt, &tree.walk(&vertices), steps));
+            found.extend(outliers::chain_end_outliers(dt, &tree.walk(vertices), steps));
         }
     }
     found
@@ -422,16 +424,16 @@ fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read
     let mut chains = Chains::new(dt, join_ratio);
     let mut scratch = Scratch(Reading::new(dt, &[]));
     for (vertices, branched) in forests.components() {
-        if !branched {
-            let path = tree.walk(&vertices);
+        if !*branched {
+            let path = tree.walk(vertices);
             pairs.extend(path.windows(2).map(|w| [w[0], w[1]]));
             chains.add(&path);
             continue;
         }
-        let Some(closed) = closed_component(dt, graph, &vertices, join_ratio) else {
+        let Some(closed) = closed_component(dt, graph, vertices, join_ratio) else {
             return fallback(dt);
         };
-        let bound = join_ratio * sigdt.longest_edge(dt, &vertices) * (1.0 + TIE_SLACK);
+        let bound = join_ratio * sigdt.longest_edge(dt, vertices) * (1.0 + TIE_SLACK);
         let within = |&[a, b]: &[u32; 2]| distance(dt.point(a), dt.point(b)) <= bound;
         // Loops that zigzag are no curve's polygon (no sampled curve zigzags, corners
         // included): the component's own spanning tree, read as a path, replaces them when
@@ -439,11 +441,10 @@ fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read
         // along it). Loops with an edge beyond the join bound give way to the SIGDT pieces.
         let mut paths = None;
         if steps.zigzag_paths && scratch.zigzags(&closed.edges) {
-            paths =
-                tree.pieces_as_paths(dt, &vertices).filter(|p| !scratch.zigzags(&path_pairs(p)));
+            paths = tree.pieces_as_paths(dt, vertices).filter(|p| !scratch.zigzags(&path_pairs(p)));
         }
         if paths.is_none() && !closed.edges.iter().all(within) {
-            paths = sigdt.pieces_as_paths(dt, &vertices);
+            paths = sigdt.pieces_as_paths(dt, vertices);
         }
         if let Some(paths) = paths {
             pairs.extend(path_pairs(&paths));

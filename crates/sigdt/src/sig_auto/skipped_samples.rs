@@ -34,6 +34,9 @@ use crate::geometry::{distance, segment_distance};
 /// sampling of `reading`'s curves back into it (module docs); returns those put back,
 /// ascending.
 pub(super) fn put_back_skipped(reading: &mut Reading<'_>, outliers: &[u32]) -> Vec<u32> {
+    if outliers.is_empty() {
+        return Vec::new();
+    }
     let dt = reading.dt;
     // Result edges that are not Delaunay edges: the only ones a Delaunay edge can cross.
     let foreign: Vec<[u32; 2]> =

@@ -10,9 +10,9 @@ use super::spur_path::path_with_spurs;
 use crate::delaunay::Triangulation;
 use crate::geometry::distance;
 use crate::graph::{EdgeMask, UnionFind};
-use crate::proximity::emst::{kruskal, merge_sorted, sorted_by_length};
+use crate::proximity::emst::{kruskal_with_sets, merge_sorted, sorted_by_length};
 use crate::proximity::leaf_elimination::eliminate_leaves_with_degrees;
-use crate::proximity::sigdt::sigdt_with_degrees;
+use crate::proximity::sigdt::sigdt_with_degrees_for;
 
 /// SIGDT2, the minimum spanning forests of SIGDT and of SIGDT2.
 pub(crate) struct Forests {
@@ -24,58 +24,74 @@ pub(crate) struct Forests {
     pub sigdt: Tree,
     /// The minimum spanning forest of SIGDT2.
     pub sigdt2: Tree,
-    sigdt2_pairs: Vec<[u32; 2]>,
-    vertices: usize,
+    /// The connected components of SIGDT2 (see [`Forests::components`]).
+    components: Vec<(Vec<u32>, bool)>,
 }
 
 impl Forests {
-    /// The forests of a proper triangulation.
-    pub(crate) fn new(dt: &Triangulation) -> Forests {
-        let (sigdt, degree) = sigdt_with_degrees(dt);
+    /// The forests of a proper triangulation, given every vertex's nearest-neighbour
+    /// distance (`proximity::nearest::nearest_vertex_distances`).
+    pub(crate) fn new(dt: &Triangulation, spacing: &[f64]) -> Forests {
+        let (sigdt, degree) = sigdt_with_degrees_for(dt, spacing);
         let mut graph = sigdt.clone();
         let leaf_edges_added = eliminate_leaves_with_degrees(dt, &mut graph, degree);
         let sigdt_edges = dt.edge_halfedges().filter(|&h| sigdt.contains(h));
-        let sigdt_forest = kruskal(dt, sorted_by_length(dt, sigdt_edges));
+        let (sigdt_forest, sigdt_sets) = kruskal_with_sets(dt, sorted_by_length(dt, sigdt_edges));
         let leaf_edges = sorted_by_length(
             dt,
             dt.edge_halfedges().filter(|&h| graph.contains(h) && !sigdt.contains(h)),
         );
+        let sigdt_tree = Tree::new(dt, &sigdt_forest);
         // Without leaf edges, SIGDT2 is SIGDT and so are their forests.
-        let sigdt2_edges = match leaf_edges.is_empty() {
-            true => sigdt_forest.clone(),
-            false => kruskal(dt, merge_sorted(dt, &sigdt_forest, &leaf_edges)),
+        let (sigdt2, mut sets) = match leaf_edges.is_empty() {
+            true => (sigdt_tree.clone(), sigdt_sets),
+            false => {
+                let (edges, sets) =
+                    kruskal_with_sets(dt, merge_sorted(dt, &sigdt_forest, &leaf_edges));
+                (Tree::new(dt, &edges), sets)
+            }
         };
-        Forests {
-            sigdt: Tree::new(dt, &sigdt_forest),
-            sigdt2: Tree::new(dt, &sigdt2_edges),
-            graph,
-            leaf_edges_added,
-            sigdt2_pairs: sigdt2_edges.iter().map(|&h| [dt.origin(h), dt.dest(h)]).collect(),
-            vertices: dt.num_vertices(),
-        }
+        let components = components(&mut sets, &sigdt2);
+        Forests { sigdt: sigdt_tree, sigdt2, graph, leaf_edges_added, components }
     }
 
     /// The connected components of SIGDT2 (vertices in increasing order, components by
     /// their representative) and whether the component's spanning tree branches (some
     /// vertex has three or more tree edges).
-    pub(crate) fn components(&self) -> Vec<(Vec<u32>, bool)> {
-        let n = self.vertices;
-        let mut uf = UnionFind::new(n);
-        for &[a, b] in &self.sigdt2_pairs {
-            uf.union(a, b);
-        }
-        let root: Vec<u32> = (0..n as u32).map(|v| uf.find(v)).collect();
-        let mut members: Vec<(Vec<u32>, bool)> = vec![(Vec::new(), false); n];
-        for v in 0..n as u32 {
-            let entry = &mut members[root[v as usize] as usize];
-            entry.0.push(v);
-            entry.1 |= self.sigdt2.degree(v) > 2;
-        }
-        members.into_iter().filter(|(m, _)| !m.is_empty()).collect()
+    pub(crate) fn components(&self) -> &[(Vec<u32>, bool)] {
+        &self.components
     }
 }
 
+/// The trees of `sets` (Kruskal's sets of the forest `tree`), as [`Forests::components`]
+/// lists them: counted first, so that each gets one allocation of its size.
+fn components(sets: &mut UnionFind, tree: &Tree) -> Vec<(Vec<u32>, bool)> {
+    let n = tree.start.len() - 1;
+    let root: Vec<u32> = (0..n as u32).map(|v| sets.find(v)).collect();
+    // Slot of each representative, in increasing order of representatives.
+    let mut slot = vec![u32::MAX; n];
+    let mut sizes: Vec<usize> = Vec::new();
+    for v in 0..n {
+        if root[v] == v as u32 {
+            slot[v] = sizes.len() as u32;
+            sizes.push(0);
+        }
+    }
+    for &r in &root {
+        sizes[slot[r as usize] as usize] += 1;
+    }
+    let mut out: Vec<(Vec<u32>, bool)> =
+        sizes.into_iter().map(|size| (Vec::with_capacity(size), false)).collect();
+    for (v, &r) in root.iter().enumerate() {
+        let entry = &mut out[slot[r as usize] as usize];
+        entry.0.push(v as u32);
+        entry.1 |= tree.degree(v as u32) > 2;
+    }
+    out
+}
+
 /// A forest over the triangulation's vertices as compressed adjacency lists.
+#[derive(Clone)]
 pub(crate) struct Tree {
     start: Vec<usize>,
     entries: Vec<u32>,
