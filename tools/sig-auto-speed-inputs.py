@@ -1,0 +1,48 @@
+"""Writes the inputs of SIG-AUTO's speed figures (README "Speed and memory",
+docs/algorithms.md section 7.3): a smooth closed curve of 10^6 points sampled evenly by arc
+length with +-0.1 spacing jitter along it, and a 10^5-point curve with +-0.3 jitter along
+it and Gaussian noise of a quarter of the spacing across, both shuffled.
+
+usage: .venv/bin/python tools/sig-auto-speed-inputs.py OUT_DIR
+then:  sigdt reconstruct OUT_DIR/even1e6.xy --threads 1 -o OUT.edges   (and --method
+       sig-connect2d; tools/bench-process.sh interleaves whole processes)
+"""
+
+import sys
+from pathlib import Path
+
+import numpy as np
+
+
+def blob(fine: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A smooth star-shaped closed curve as a fine polyline, and its arc length."""
+    t = np.linspace(0.0, 2.0 * np.pi, fine + 1)
+    r = 1.0 + 0.3 * np.sin(3.0 * t) + 0.1 * np.cos(7.0 * t)
+    x, y = r * np.cos(t), r * np.sin(t)
+    length = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(x), np.diff(y)))])
+    return x, y, length
+
+
+def sample(n: int, jitter: float, noise: float, seed: int) -> np.ndarray:
+    """`n` points along the curve, jittered along it by up to `jitter` spacings and across
+    by Gaussian noise of `noise` spacings, shuffled."""
+    rng = np.random.default_rng(seed)
+    x, y, length = blob(2_000_000)
+    spacing = length[-1] / n
+    s = ((np.arange(n) + rng.uniform(-jitter, jitter, n)) * spacing) % length[-1]
+    px = np.interp(s, length, x) + rng.normal(0.0, noise * spacing, n)
+    py = np.interp(s, length, y) + rng.normal(0.0, noise * spacing, n)
+    return np.column_stack([px, py])[rng.permutation(n)]
+
+
+def main() -> None:
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = Path(sys.argv[1])
+    out.mkdir(parents=True, exist_ok=True)
+    np.savetxt(out / "even1e6.xy", sample(10**6, 0.1, 0.0, 5), fmt="%.10f")
+    np.savetxt(out / "noisy1e5.xy", sample(10**5, 0.3, 0.25, 11), fmt="%.10f")
+
+
+if __name__ == "__main__":
+    main()
