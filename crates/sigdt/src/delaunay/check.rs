@@ -61,7 +61,8 @@ fn check_hull(dt: &Triangulation) -> Result<(), String> {
         }
         after[dt.origin(h) as usize] = dt.dest(h);
     }
-    let start = dt.origin(hull[0]);
+    let Some(&first) = hull.first() else { return Err("no hull edge".to_string()) };
+    let start = dt.origin(first);
     let (mut u, mut v, mut steps) = (start, after[start as usize], 1);
     while v != start {
         let w = after[v as usize];
