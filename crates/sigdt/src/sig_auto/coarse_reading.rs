@@ -76,9 +76,10 @@ pub(super) fn coarse_reading(
         return None;
     }
     let inner = Steps { coarse: false, ..*steps };
+    let order = hilbert_order(|v| dt.point(v), dt.num_vertices());
     for factor in THINNING {
         let radius = factor * spacing;
-        let kept = thin(dt, radius);
+        let kept = thin(dt, &order, radius);
         if kept.len() < 3 || kept.len() == dt.num_vertices() {
             continue;
         }
@@ -163,11 +164,12 @@ impl<'a> Cells<'a> {
     }
 }
 
-/// Vertices of `dt` at least `radius` apart, chosen greedily along the Hilbert curve.
-fn thin(dt: &Triangulation, radius: f64) -> Vec<u32> {
+/// Vertices of `dt` at least `radius` apart, chosen greedily in `order` (its vertices along
+/// the Hilbert curve).
+fn thin(dt: &Triangulation, order: &[u32], radius: f64) -> Vec<u32> {
     let mut cells = Cells::new(dt, radius);
     let mut kept = Vec::new();
-    for v in hilbert_order(|v| dt.point(v), dt.num_vertices()) {
+    for &v in order {
         if !cells.has_near(v) {
             cells.add(v);
             kept.push(v);
@@ -400,7 +402,8 @@ mod tests {
         let mut r = nearest_vertex_distances(&dt);
         r.sort_by(f64::total_cmp);
         let radius = 3.0 * r[r.len() / 2];
-        let kept = thin(&dt, radius);
+        let order = hilbert_order(|v| dt.point(v), dt.num_vertices());
+        let kept = thin(&dt, &order, radius);
         for (i, &a) in kept.iter().enumerate() {
             for &b in &kept[i + 1..] {
                 assert!(distance(dt.point(a), dt.point(b)) >= radius);

@@ -681,12 +681,20 @@ mod tests {
     fn with_outliers_left_out(xy: &str, gt: &str) -> (Reconstruction, Vec<(usize, usize)>) {
         let (points, truth) = labelled(xy, gt);
         let rec = run(&points);
+        assert_eq!(left_out(&rec), outliers(points.len(), &truth));
+        (rec, truth)
+    }
+
+    /// The outliers of a labelled case: the points on none of its true edges.
+    fn outliers(n: usize, truth: &[(usize, usize)]) -> Vec<usize> {
         let on_curve: std::collections::HashSet<usize> =
             truth.iter().flat_map(|&(a, b)| [a, b]).collect();
-        let outliers: Vec<usize> = (0..points.len()).filter(|i| !on_curve.contains(i)).collect();
-        let left_out: Vec<usize> = rec.left_out.iter().map(|l| l.index).collect();
-        assert_eq!(left_out, outliers);
-        (rec, truth)
+        (0..n).filter(|i| !on_curve.contains(i)).collect()
+    }
+
+    /// The input indices `rec` left out.
+    fn left_out(rec: &Reconstruction) -> Vec<usize> {
+        rec.left_out.iter().map(|l| l.index).collect()
     }
 
     fn sorted_edges(rec: &Reconstruction) -> Vec<(usize, usize)> {
@@ -739,11 +747,9 @@ mod tests {
         let (points, truth) = labelled(xy, gt);
         let rec = run(&points);
         assert_eq!(rec.loops.len(), 1);
-        let on_curve: std::collections::HashSet<usize> =
-            truth.iter().flat_map(|&(a, b)| [a, b]).collect();
-        let left_out: Vec<usize> = rec.left_out.iter().map(|l| l.index).collect();
-        assert!(left_out.iter().all(|i| !on_curve.contains(i)), "a curve sample is cut");
-        assert_eq!(left_out.len(), points.len() - on_curve.len() - 1);
+        let (left_out, outliers) = (left_out(&rec), outliers(points.len(), &truth));
+        assert!(left_out.iter().all(|i| outliers.contains(i)), "a curve sample is cut");
+        assert_eq!(left_out.len(), outliers.len() - 1);
     }
 
     #[test]
