@@ -300,3 +300,16 @@ fn golden_real_shapes_stretch_denoise() {
 fn golden_real_shapes_optimal_transport() {
     real_shapes(|name| name == Method::OptimalTransport.name());
 }
+
+/// The drawings of curves that meet in `data/non-manifold` (issue 33): SIG-AUTO's exact
+/// list, which its junction step filled, and the graph filters that read junctions at all
+/// (NN-CRUST, CRUST, EMST), for comparison.
+#[test]
+fn golden_non_manifold() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data/non-manifold");
+    for method in [Method::SigAuto, Method::NnCrust, Method::Crust, Method::Emst] {
+        let run = run(&dir, &options(method.name()));
+        println!("{}", report(&run, &format!("{} on data/non-manifold", method.name())));
+        check_golden(&run, "non-manifold", method.name());
+    }
+}

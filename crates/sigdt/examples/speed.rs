@@ -219,6 +219,10 @@ fn cgal_time(tool: &Path, file: &Path) -> Res<f64> {
     Ok(ms.parse::<f64>()? / 1e3)
 }
 
+/// `sigdt view` and `sigdt render` refuse more points than this (their pages and pictures
+/// would not be usable); their columns say `n/a` above it.
+const MAX_PICTURE_POINTS: usize = 2_000_000;
+
 /// One row of the whole-process table: `sigdt reconstruct` on one and `t` threads,
 /// `cgal-delaunay`, and `sigdt view` and `sigdt render` (a PNG) on `t` threads, in turn,
 /// under `/usr/bin/time`.
@@ -260,20 +264,28 @@ fn whole_process(
         if let Some(c) = cgal {
             cgals.push(run(c, 1, &[file])?.0);
         }
-        views.push(run(cli, t, &view)?.0);
-        renders.push(run(cli, t, &render)?.0);
+        if n <= MAX_PICTURE_POINTS {
+            views.push(run(cli, t, &view)?.0);
+            renders.push(run(cli, t, &render)?.0);
+        }
     }
     let (one, many, peak) = (median(&mut ones), median(&mut manys), median(&mut rss));
     let cgal = (!cgals.is_empty()).then(|| median(&mut cgals));
-    let page_mb = std::fs::metadata(&page)?.len() as f64 / 1e6;
+    let cell = |x: Option<f64>| x.map_or("n/a".into(), |x| format!("{x:.2}"));
+    // A page of an earlier, smaller size may still lie there.
+    let page_mb = match views.is_empty() {
+        true => None,
+        false => Some(std::fs::metadata(&page)?.len() as f64 / 1e6),
+    };
     Ok(format!(
-        "{one:.2} | {many:.2} | {:.2} | {} | {} | {:.0} | {:.2} | {page_mb:.1} | {:.2} |",
+        "{one:.2} | {many:.2} | {:.2} | {} | {} | {:.0} | {} | {} | {} |",
         one / many,
-        cgal.map_or("n/a".into(), |c| format!("{c:.2}")),
-        cgal.map_or("n/a".into(), |c| format!("{:.2}", one / c)),
+        cell(cgal),
+        cell(cgal.map(|c| one / c)),
         peak / n as f64,
-        median(&mut views),
-        median(&mut renders),
+        cell((!views.is_empty()).then(|| median(&mut views))),
+        page_mb.map_or("n/a".into(), |mb| format!("{mb:.1}")),
+        cell((!renders.is_empty()).then(|| median(&mut renders))),
     ))
 }
 

@@ -53,12 +53,21 @@
 //!    of the result are put back into it (`skipped_samples`): the check's own rule says they
 //!    are samples.
 //!
+//! 8. **Junctions** (`junctions`): where curves meet (cross, end on one another, share an
+//!    end), every reading through all points breaks: it turns sharply, leaves points out
+//!    or stops. Each vertex takes its straightest pair of SIGDT edges; a vertex that three
+//!    or more such pairs reach, with evenly spaced branches of at least three samples and
+//!    no other such vertex within two edges, is a junction, and where the reading breaks
+//!    near one, the pairs' graph replaces it on that piece: status `network`, paths between
+//!    junctions and ends.
+//!
 //! Points left out are listed in the result with the reason `outlier`; a result whose
 //! loops pass through every point that is not left out is a `polygon` or `polygons`.
 //!
 //! # Guarantees
-//! - The output is always a set of vertex-disjoint simple loops and simple open paths made
-//!   of Delaunay edges; no two edges cross.
+//! - The output is made of Delaunay edges, no two of which cross. Without junctions
+//!   (status other than `network`) it is a set of vertex-disjoint simple loops and simple
+//!   open paths; a network's paths share only junctions.
 //! - A closed curve sampled with ρ < 1 and u < 2 ([MOW22] Theorem 1): SIGDT contains its
 //!   polygon; when that polygon is the component's spanning path plus one edge, the closing
 //!   edge satisfies the join bound and the curve comes back closed.
@@ -87,6 +96,7 @@ mod closed_component;
 mod coarse_reading;
 mod continuation;
 mod isolated;
+mod junctions;
 mod outliers;
 mod reading;
 mod shorter_reading;
@@ -96,13 +106,13 @@ mod spur_path;
 mod steps;
 mod wired_outliers;
 
-use crate::delaunay::Triangulation;
-use crate::geometry::distance;
+use crate::delaunay::{Shape, Triangulation};
+use crate::geometry::{distance, Point};
 use crate::proximity::nearest::nearest_vertex_distances;
 use crate::proximity::sigdt::TIE_SLACK;
 use crate::result::{
     degenerate_result, diagnose, from_vertex_pairs, inside_left_out, Finding, FindingKind, LeftOut,
-    LeftOutReason, Reconstruction, Stats, Status, DEPTH_RATIO,
+    LeftOutReason, Reconstruction, Stats, Status, Vertices, DEPTH_RATIO,
 };
 use crate::sig_connect2d::sig_connect2d_on;
 use chain_join::Chains;
@@ -137,10 +147,74 @@ pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
 #[doc(hidden)]
 pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     let rec = checked_reading(dt, steps);
-    match steps.skipped_samples {
+    let rec = match steps.skipped_samples {
         true => with_skipped_samples(dt, rec),
         false => rec,
+    };
+    match steps.junctions {
+        true => with_junctions(dt, rec),
+        false => rec,
     }
+}
+
+/// `rec` with the components of the pair graph that hold a junction in place of its reading
+/// on their points (`junctions`), checked again; `rec` itself when there is none, or when a
+/// reading edge joins such a component to a point outside it.
+fn with_junctions(dt: &Triangulation, rec: Reconstruction) -> Reconstruction {
+    // A status names one way the result is off: points left inside stay that way, and
+    // where the reading zigzags like noise, pairs of edges run straight by chance.
+    let off = matches!(rec.status, Status::SculptingStuck { .. } | Status::Noisy);
+    if dt.shape() != Shape::Proper || rec.vertices != Vertices::Input || off {
+        return rec;
+    }
+    let pairs = junctions::PairGraph::new(dt);
+    let n = dt.num_vertices();
+    if !(0..n as u32).any(|v| pairs.degree(v) >= 3) {
+        return rec;
+    }
+    let vertex_of = dt.vertex_of_inputs();
+    let reading: Vec<[u32; 2]> =
+        rec.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
+    let mut around = vec![[u32::MAX; 2]; n];
+    let mut degree = vec![0u8; n];
+    for &[a, b] in &reading {
+        for (v, w) in [(a, b), (b, a)] {
+            let d = &mut degree[v as usize];
+            if (*d as usize) < 2 {
+                around[v as usize][*d as usize] = w;
+            }
+            *d = d.saturating_add(1);
+        }
+    }
+    let cos_limit = MAX_SAMPLED_TURN.cos();
+    let breaks = |v: u32| {
+        let [a, b] = around[v as usize];
+        degree[v as usize] != 2 || turn_cos(dt.point(a), dt.point(v), dt.point(b)) < cos_limit
+    };
+    let found = junctions::junctions(dt, &pairs);
+    if found.is_empty() {
+        return rec;
+    }
+    let network = junctions::network_vertices(&pairs, n, &found, breaks);
+    let inside = |v: u32| network[v as usize];
+    if !network.contains(&true) || reading.iter().any(|&[a, b]| inside(a) != inside(b)) {
+        return rec;
+    }
+    let mut network: Vec<[u32; 2]> = reading.into_iter().filter(|&[a, _]| !inside(a)).collect();
+    for v in (0..n as u32).filter(|&v| inside(v)) {
+        network.extend(pairs.neighbours(v).iter().filter(|&&w| v < w).map(|&w| [v, w]));
+    }
+    let outliers: Vec<u32> =
+        outlier_vertices(&rec, &vertex_of).into_iter().filter(|&v| !inside(v)).collect();
+    let mut read = finish(dt, network, Vec::new(), &outliers, rec.stats);
+    read.diagnosis = diagnose(dt, &read);
+    read
+}
+
+/// The cosine of the turn at `b` from `a` to `c`: 1 straight on, -1 back.
+fn turn_cos(a: Point, b: Point, c: Point) -> f64 {
+    let (u, w) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
+    (u[0] * w[0] + u[1] * w[1]) / ((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1])).sqrt()
 }
 
 /// The reading, checked, with the wired-in outliers cut and the coarse reading where the

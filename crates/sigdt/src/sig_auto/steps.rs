@@ -39,6 +39,9 @@ pub struct Steps {
     /// Put back the outliers that lie within the sampling of the result's curves
     /// (`skipped_samples`).
     pub skipped_samples: bool,
+    /// Read junctions where the reading breaks and straight pairs of SIGDT edges meet
+    /// (`junctions`, step 8).
+    pub junctions: bool,
 }
 
 impl Default for Steps {
@@ -56,6 +59,7 @@ impl Default for Steps {
             coarse: true,
             wired_outliers: true,
             skipped_samples: true,
+            junctions: true,
         }
     }
 }

@@ -1,0 +1,268 @@
+//! Junctions (step 8 of SIG-AUTO): where curves meet, crossing (X), one ending on another
+//! (T) or several sharing an end (Y), read from the straightest pairs of SIGDT edges.
+//!
+//! Every vertex takes the pair of its SIGDT edges that runs straightest through it, when
+//! that pair turns by at most [`MAX_SAMPLED_TURN`] (a sample of a curve sampled with ε < 1
+//! turns by less; `continuation`). The union of these *straight pairs* is the pair graph. On
+//! a sampled curve every sample takes its two curve neighbours, so the pair graph is the
+//! curve. Where curves meet in a sample `j`, the samples next to `j` on every curve take `j`
+//! in their pairs: `j` gets degree 4 where two curves cross, 3 where a curve ends on
+//! another, and one edge per curve at a common end. Short edges across two branches near
+//! `j` are nobody's straight pair, and an outlier is on none.
+//!
+//! A vertex of degree 3 or more in the pair graph is a junction when
+//! 1. its edges there are sampled like one curve: the longest is less than twice the
+//!    shortest (the non-uniformity bound u < 2 of [MOW22], applied across the branches);
+//! 2. no other vertex of degree 3 or more lies within two edges of it: two so close are
+//!    samples of two curves that pass near each other and swapped neighbours (noise does
+//!    this), not curves that meet;
+//! 3. every branch at it is a curve of its own: it runs through at least [`MIN_BRANCH`]
+//!    samples before it ends or branches (a few outliers in a row beside a curve do not);
+//!
+//! A component of the pair graph whose vertices of degree 3 or more are all junctions
+//! replaces SIG-AUTO's reading on its points when that reading breaks within two edges of
+//! one of its junctions (a point there is left out, ends a path or turns by more than
+//! [`MAX_SAMPLED_TURN`]) and no reading edge joins the component to a point outside it.
+//! Where the reading passes smoothly, it reads the points as the paper's sampling condition
+//! says they are, and is kept.
+//!
+//! # Complexity
+//! O(n + Σ deg²) time over the SIGDT degrees (O(n) on curve samples, whose SIGDT degrees
+//! are bounded), O(n) memory.
+//!
+//! [MOW22]: https://doi.org/10.1111/cgf.14654
+use super::continuation::MAX_SAMPLED_TURN;
+use crate::delaunay::Triangulation;
+use crate::geometry::{squared_distance, Point};
+use crate::proximity::nearest::nearest_vertex_distances;
+use crate::proximity::sigdt::sigdt_with_degrees_for;
+
+/// The fewest samples past a junction that make a branch (test 3 of the module docs):
+/// three samples show a curve's direction and its bending, and the junction adds one more.
+pub const MIN_BRANCH: usize = 3;
+
+/// The pair graph of `dt` (see the module docs) in compressed rows: the neighbours of vertex
+/// `v` are `neighbours[start[v]..start[v + 1]]`, sorted.
+pub(super) struct PairGraph {
+    start: Vec<u32>,
+    neighbours: Vec<u32>,
+}
+
+impl PairGraph {
+    /// Every vertex's straightest pair of SIGDT edges, joined.
+    pub fn new(dt: &Triangulation) -> PairGraph {
+        let n = dt.num_vertices();
+        let r = nearest_vertex_distances(dt);
+        let (sigdt, _) = sigdt_with_degrees_for(dt, &r);
+        let limit = -MAX_SAMPLED_TURN.cos();
+        let mut edges: Vec<[u32; 2]> = Vec::with_capacity(2 * n);
+        let mut around: Vec<u32> = Vec::new();
+        for v in 0..n as u32 {
+            around.clear();
+            around.extend(dt.incident(v).filter(|&h| sigdt.contains(h)).map(|h| dt.other(h, v)));
+            around.sort_unstable();
+            if let Some([a, b]) = straightest_pair(dt.point(v), &around, |u| dt.point(u), limit) {
+                edges.extend([[v.min(a), v.max(a)], [v.min(b), v.max(b)]]);
+            }
+        }
+        edges.sort_unstable();
+        edges.dedup();
+        let mut degree = vec![0u32; n + 1];
+        for &[a, b] in &edges {
+            degree[a as usize + 1] += 1;
+            degree[b as usize + 1] += 1;
+        }
+        for v in 0..n {
+            degree[v + 1] += degree[v];
+        }
+        let start = degree;
+        let mut fill = start.clone();
+        let mut neighbours = vec![0u32; 2 * edges.len()];
+        for &[a, b] in &edges {
+            neighbours[fill[a as usize] as usize] = b;
+            fill[a as usize] += 1;
+            neighbours[fill[b as usize] as usize] = a;
+            fill[b as usize] += 1;
+        }
+        PairGraph { start, neighbours }
+    }
+
+    pub fn neighbours(&self, v: u32) -> &[u32] {
+        &self.neighbours[self.start[v as usize] as usize..self.start[v as usize + 1] as usize]
+    }
+
+    pub fn degree(&self, v: u32) -> usize {
+        self.neighbours(v).len()
+    }
+
+    /// Whether the branch that leaves `j` along its edge to `w` runs through at least `k`
+    /// vertices before it ends or branches.
+    fn branch_reaches(&self, j: u32, w: u32, k: usize) -> bool {
+        let (mut previous, mut current) = (j, w);
+        for _ in 1..k {
+            let &[a, b] = self.neighbours(current) else { return false };
+            (previous, current) = (current, if a == previous { b } else { a });
+        }
+        true
+    }
+
+    /// `v` and the vertices within two edges of it (with repeats).
+    fn within_two(&self, v: u32) -> impl Iterator<Item = u32> + '_ {
+        let near = self.neighbours(v).iter().flat_map(move |&w| self.neighbours(w));
+        std::iter::once(v).chain(self.neighbours(v).iter().copied()).chain(near.copied())
+    }
+}
+
+/// The two of `around` (sorted) whose directions from `p` make the widest angle, if its
+/// cosine is at most `limit`; ties go to the lowest indices.
+fn straightest_pair(
+    p: Point,
+    around: &[u32],
+    point: impl Fn(u32) -> Point,
+    limit: f64,
+) -> Option<[u32; 2]> {
+    let direction = |u: u32| {
+        let q = point(u);
+        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+        let length = (dx * dx + dy * dy).sqrt();
+        [dx / length, dy / length]
+    };
+    let directions: Vec<[f64; 2]> = around.iter().map(|&u| direction(u)).collect();
+    let mut best: Option<(f64, [u32; 2])> = None;
+    for i in 0..around.len() {
+        for k in i + 1..around.len() {
+            let cos = directions[i][0] * directions[k][0] + directions[i][1] * directions[k][1];
+            if best.map_or(true, |(c, _)| cos < c) {
+                best = Some((cos, [around[i], around[k]]));
+            }
+        }
+    }
+    best.filter(|&(cos, _)| cos <= limit).map(|(_, pair)| pair)
+}
+
+/// The junctions of `pairs` (see the module docs, tests 1–3), sorted.
+pub(super) fn junctions(dt: &Triangulation, pairs: &PairGraph) -> Vec<u32> {
+    let branching = |v: u32| pairs.degree(v) >= 3;
+    let uniform = |j: u32| {
+        let lengths =
+            pairs.neighbours(j).iter().map(|&w| squared_distance(dt.point(j), dt.point(w)));
+        let (short, long) = lengths.fold((f64::INFINITY, 0.0f64), |(s, l), x| (s.min(x), l.max(x)));
+        long < 4.0 * short
+    };
+    (0..dt.num_vertices() as u32)
+        .filter(|&j| branching(j) && uniform(j))
+        .filter(|&j| pairs.within_two(j).all(|v| v == j || !branching(v)))
+        .filter(|&j| pairs.neighbours(j).iter().all(|&w| pairs.branch_reaches(j, w, MIN_BRANCH)))
+        .collect()
+}
+
+/// Whether each vertex lies in a component of the pair graph whose vertices of degree 3 or
+/// more are all `junctions` (sorted), at one of which at least SIG-AUTO's reading breaks
+/// (test 4 of the module docs: `breaks(v)` says whether it breaks at vertex `v`).
+pub(super) fn network_vertices(
+    pairs: &PairGraph,
+    n: usize,
+    junctions: &[u32],
+    breaks: impl Fn(u32) -> bool,
+) -> Vec<bool> {
+    let mut seen = vec![false; n];
+    let mut network = vec![false; n];
+    let mut component = Vec::new();
+    for &j in junctions {
+        if seen[j as usize] {
+            continue;
+        }
+        seen[j as usize] = true;
+        component.clear();
+        component.push(j);
+        let mut k = 0;
+        while let Some(&v) = component.get(k) {
+            k += 1;
+            for &w in pairs.neighbours(v) {
+                if !seen[w as usize] {
+                    seen[w as usize] = true;
+                    component.push(w);
+                }
+            }
+        }
+        let known = |v: &u32| pairs.degree(*v) < 3 || junctions.binary_search(v).is_ok();
+        let breaks_near = |&j: &u32| pairs.within_two(j).any(&breaks);
+        let mut met = component.iter().filter(|&&v| pairs.degree(v) >= 3);
+        if component.iter().all(known) && met.any(breaks_near) {
+            for &v in &component {
+                network[v as usize] = true;
+            }
+        }
+    }
+    network
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn graph(points: &[Point]) -> (Triangulation, PairGraph) {
+        let dt = Triangulation::new(points).unwrap();
+        let pairs = PairGraph::new(&dt);
+        (dt, pairs)
+    }
+
+    /// Two straight strokes of `k` samples each side crossing at the origin at `angle`.
+    fn cross(k: usize, angle: f64) -> Vec<Point> {
+        let mut points = vec![[0.0, 0.0]];
+        for s in 1..=k {
+            let t = s as f64;
+            points.extend([[t, 0.0], [-t, 0.0]]);
+            points
+                .extend([[t * angle.cos(), t * angle.sin()], [-t * angle.cos(), -t * angle.sin()]]);
+        }
+        points
+    }
+
+    #[test]
+    fn a_crossing_is_one_vertex_of_degree_four() {
+        let (dt, pairs) = graph(&cross(6, 1.2));
+        let centre = dt.vertex_of_inputs()[0];
+        assert_eq!(pairs.degree(centre), 4);
+        let others = (0..dt.num_vertices() as u32).filter(|&v| v != centre);
+        assert!(others.clone().all(|v| pairs.degree(v) <= 2));
+        let found = junctions(&dt, &pairs);
+        assert_eq!(found, vec![centre]);
+        let n = dt.num_vertices();
+        assert!(network_vertices(&pairs, n, &found, |_| true).iter().all(|&x| x));
+        // Where the reading passes smoothly, it is kept.
+        assert!(!network_vertices(&pairs, n, &found, |_| false).contains(&true));
+    }
+
+    #[test]
+    fn a_smooth_closed_curve_has_no_branching_vertex() {
+        let points: Vec<Point> = (0..40)
+            .map(|i| {
+                let a = i as f64 * std::f64::consts::TAU / 40.0;
+                [2.0 * a.cos(), a.sin()]
+            })
+            .collect();
+        let (dt, pairs) = graph(&points);
+        assert!((0..dt.num_vertices() as u32).all(|v| pairs.degree(v) == 2));
+        assert!(junctions(&dt, &pairs).is_empty());
+    }
+
+    #[test]
+    fn unevenly_spaced_branches_are_no_junction() {
+        // A T whose stem arrives at more than twice the spacing of the bar.
+        let mut points: Vec<Point> = (-8..=8).map(|i| [i as f64, 0.0]).collect();
+        points.extend((1..=6).map(|i| [0.3, 2.5 * i as f64]));
+        let (dt, pairs) = graph(&points);
+        assert!(junctions(&dt, &pairs).is_empty());
+    }
+
+    #[test]
+    fn straightest_pair_breaks_ties_by_index() {
+        let around = [1, 2, 3, 4];
+        let at = |u: u32| [[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]][u as usize - 1];
+        assert_eq!(straightest_pair([0.0, 0.0], &around, at, -0.5), Some([1, 2]));
+        assert_eq!(straightest_pair([0.0, 0.0], &around[2..], at, -0.5), Some([3, 4]));
+        let bent = [[1.0, 0.0], [0.0, 1.0]];
+        assert_eq!(straightest_pair([0.0, 0.0], &[1, 2], |u| bent[u as usize - 1], -0.5), None);
+    }
+}
