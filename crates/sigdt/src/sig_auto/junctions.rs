@@ -41,48 +41,62 @@ use crate::proximity::sigdt::sigdt_with_degrees_for;
 /// three samples show a curve's direction and its bending, and the junction adds one more.
 pub const MIN_BRANCH: usize = 3;
 
+/// No vertex, in a pair.
+const NONE: u32 = u32::MAX;
+
 /// The pair graph of `dt` (see the module docs) in compressed rows: the neighbours of vertex
-/// `v` are `neighbours[start[v]..start[v + 1]]`, sorted.
+/// `v` are `neighbours[start[v]..start[v + 1]]`.
 pub(super) struct PairGraph {
     start: Vec<u32>,
     neighbours: Vec<u32>,
 }
 
 impl PairGraph {
-    /// Every vertex's straightest pair of SIGDT edges, joined.
+    /// Every vertex's straightest pair of SIGDT edges, joined. O(n) beyond the SIGDT test:
+    /// a row holds the vertex's own pair and the vertices that took it into theirs.
     pub fn new(dt: &Triangulation) -> PairGraph {
         let n = dt.num_vertices();
         let r = nearest_vertex_distances(dt);
         let (sigdt, _) = sigdt_with_degrees_for(dt, &r);
         let limit = -MAX_SAMPLED_TURN.cos();
-        let mut edges: Vec<[u32; 2]> = Vec::with_capacity(2 * n);
         let mut around: Vec<u32> = Vec::new();
+        let mut directions: Vec<[f64; 2]> = Vec::new();
+        let picks: Vec<[u32; 2]> = (0..n as u32)
+            .map(|v| {
+                around.clear();
+                let sig = dt.incident(v).filter(|&h| sigdt.contains(h));
+                around.extend(sig.map(|h| dt.other(h, v)));
+                around.sort_unstable();
+                straightest_pair(dt.point(v), &around, |u| dt.point(u), limit, &mut directions)
+                    .unwrap_or([NONE; 2])
+            })
+            .collect();
+        let takes = |v: u32, w: u32| picks[v as usize].contains(&w);
+        let mut start = vec![0u32; n + 1];
         for v in 0..n as u32 {
-            around.clear();
-            around.extend(dt.incident(v).filter(|&h| sigdt.contains(h)).map(|h| dt.other(h, v)));
-            around.sort_unstable();
-            if let Some([a, b]) = straightest_pair(dt.point(v), &around, |u| dt.point(u), limit) {
-                edges.extend([[v.min(a), v.max(a)], [v.min(b), v.max(b)]]);
+            for w in picks[v as usize].into_iter().filter(|&w| w != NONE) {
+                start[v as usize + 1] += 1;
+                if !takes(w, v) {
+                    start[w as usize + 1] += 1;
+                }
             }
         }
-        edges.sort_unstable();
-        edges.dedup();
-        let mut degree = vec![0u32; n + 1];
-        for &[a, b] in &edges {
-            degree[a as usize + 1] += 1;
-            degree[b as usize + 1] += 1;
-        }
         for v in 0..n {
-            degree[v + 1] += degree[v];
+            start[v + 1] += start[v];
         }
-        let start = degree;
         let mut fill = start.clone();
-        let mut neighbours = vec![0u32; 2 * edges.len()];
-        for &[a, b] in &edges {
-            neighbours[fill[a as usize] as usize] = b;
-            fill[a as usize] += 1;
-            neighbours[fill[b as usize] as usize] = a;
-            fill[b as usize] += 1;
+        let mut neighbours = vec![0u32; start[n] as usize];
+        let mut put = |v: u32, w: u32| {
+            neighbours[fill[v as usize] as usize] = w;
+            fill[v as usize] += 1;
+        };
+        for v in 0..n as u32 {
+            for w in picks[v as usize].into_iter().filter(|&w| w != NONE) {
+                put(v, w);
+                if !takes(w, v) {
+                    put(w, v);
+                }
+            }
         }
         PairGraph { start, neighbours }
     }
@@ -120,6 +134,7 @@ fn straightest_pair(
     around: &[u32],
     point: impl Fn(u32) -> Point,
     limit: f64,
+    directions: &mut Vec<[f64; 2]>,
 ) -> Option<[u32; 2]> {
     let direction = |u: u32| {
         let q = point(u);
@@ -127,7 +142,8 @@ fn straightest_pair(
         let length = (dx * dx + dy * dy).sqrt();
         [dx / length, dy / length]
     };
-    let directions: Vec<[f64; 2]> = around.iter().map(|&u| direction(u)).collect();
+    directions.clear();
+    directions.extend(around.iter().map(|&u| direction(u)));
     let mut best: Option<(f64, [u32; 2])> = None;
     for i in 0..around.len() {
         for k in i + 1..around.len() {
@@ -260,9 +276,15 @@ mod tests {
     fn straightest_pair_breaks_ties_by_index() {
         let around = [1, 2, 3, 4];
         let at = |u: u32| [[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]][u as usize - 1];
-        assert_eq!(straightest_pair([0.0, 0.0], &around, at, -0.5), Some([1, 2]));
-        assert_eq!(straightest_pair([0.0, 0.0], &around[2..], at, -0.5), Some([3, 4]));
+        assert_eq!(straightest_pair([0.0, 0.0], &around, at, -0.5, &mut Vec::new()), Some([1, 2]));
+        assert_eq!(
+            straightest_pair([0.0, 0.0], &around[2..], at, -0.5, &mut Vec::new()),
+            Some([3, 4])
+        );
         let bent = [[1.0, 0.0], [0.0, 1.0]];
-        assert_eq!(straightest_pair([0.0, 0.0], &[1, 2], |u| bent[u as usize - 1], -0.5), None);
+        assert_eq!(
+            straightest_pair([0.0, 0.0], &[1, 2], |u| bent[u as usize - 1], -0.5, &mut Vec::new()),
+            None
+        );
     }
 }

@@ -172,6 +172,10 @@ fn with_junctions(dt: &Triangulation, rec: Reconstruction) -> Reconstruction {
     if !(0..n as u32).any(|v| pairs.degree(v) >= 3) {
         return rec;
     }
+    let found = junctions::junctions(dt, &pairs);
+    if found.is_empty() {
+        return rec;
+    }
     let vertex_of = dt.vertex_of_inputs();
     let reading: Vec<[u32; 2]> =
         rec.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
@@ -191,10 +195,6 @@ fn with_junctions(dt: &Triangulation, rec: Reconstruction) -> Reconstruction {
         let [a, b] = around[v as usize];
         degree[v as usize] != 2 || turn_cos(dt.point(a), dt.point(v), dt.point(b)) < cos_limit
     };
-    let found = junctions::junctions(dt, &pairs);
-    if found.is_empty() {
-        return rec;
-    }
     let network = junctions::network_vertices(&pairs, n, &found, breaks);
     let inside = |v: u32| network[v as usize];
     if !network.contains(&true) || reading.iter().any(|&[a, b]| inside(a) != inside(b)) {
