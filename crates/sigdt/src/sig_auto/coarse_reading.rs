@@ -45,7 +45,6 @@ use super::{sig_auto_with, Steps};
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, orient2d, segment_foot, segments_cross, Point};
 use crate::proximity::kdtree::KdTree;
-use crate::proximity::nearest::nearest_vertex_distances;
 use crate::result::{check_curves, Finding, FindingKind, Status, MIN_LOOP_POINTS};
 
 /// The thinning factors tried, coarsest last: the spacing of the coarse points in units of
@@ -63,19 +62,22 @@ pub(super) struct FineReading {
 }
 
 /// The fine reading of the first level of [`THINNING`] that works (module docs), or
-/// `None`. `left_out` are the vertices the fine reading left out as outliers (step 2).
+/// `None`. `left_out` are the vertices the fine reading left out as outliers (step 2);
+/// `spacing` every vertex's nearest-neighbour distance.
 pub(super) fn coarse_reading(
     dt: &Triangulation,
     steps: &Steps,
     left_out: &[u32],
+    spacing: &[f64],
 ) -> Option<FineReading> {
-    let mut r = nearest_vertex_distances(dt);
+    let mut r = spacing.to_vec();
     let middle = r.len() / 2;
     let (_, &mut spacing, _) = r.select_nth_unstable_by(middle, f64::total_cmp);
     if !(spacing > 0.0 && spacing.is_finite()) {
         return None;
     }
-    let inner = Steps { coarse: false, ..*steps };
+    // A coarse reading is used only when it is closed curves.
+    let inner = Steps { coarse: false, junctions: false, ..*steps };
     let order = hilbert_order(|v| dt.point(v), dt.num_vertices());
     for factor in THINNING {
         let radius = factor * spacing;
@@ -362,6 +364,7 @@ fn loops_meet(dt: &Triangulation, loops: &[Vec<u32>]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::proximity::nearest::nearest_vertex_distances;
     use crate::samplers::Rng;
     use std::f64::consts::TAU;
 
@@ -432,7 +435,8 @@ mod tests {
     fn a_noisy_circle_reads_as_one_loop_through_its_points() {
         let points = noisy_circle(300, 0.5, 7);
         let dt = Triangulation::new(&points).unwrap();
-        let fine = coarse_reading(&dt, &Steps::default(), &[]).expect("a fine reading");
+        let spacing = nearest_vertex_distances(&dt);
+        let fine = coarse_reading(&dt, &Steps::default(), &[], &spacing).expect("a fine reading");
         assert_eq!(fine.loops.len(), 1);
         assert_eq!(fine.loops[0].len() + fine.outliers.len(), 300);
         assert!(fine.outliers.is_empty());

@@ -33,8 +33,9 @@
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 use super::continuation::MAX_SAMPLED_TURN;
 use crate::delaunay::Triangulation;
+use crate::delaunay::EMPTY;
 use crate::geometry::{squared_distance, Point};
-use crate::proximity::nearest::nearest_vertex_distances;
+use crate::graph::EdgeMask;
 use crate::proximity::sigdt::sigdt_with_degrees_for;
 
 /// The fewest samples past a junction that make a branch (test 3 of the module docs):
@@ -53,24 +54,20 @@ pub(super) struct PairGraph {
 
 impl PairGraph {
     /// Every vertex's straightest pair of SIGDT edges, joined. O(n) beyond the SIGDT test:
-    /// a row holds the vertex's own pair and the vertices that took it into theirs.
-    pub fn new(dt: &Triangulation) -> PairGraph {
+    /// the SIGDT rows are filled in one pass over the half-edges, the pairs taken in
+    /// parallel, and a row of the pair graph holds the vertex's own pair and the vertices
+    /// that took it into theirs.
+    /// `spacing`: every vertex's nearest-neighbour distance.
+    pub fn new(dt: &Triangulation, spacing: &[f64]) -> PairGraph {
         let n = dt.num_vertices();
-        let r = nearest_vertex_distances(dt);
-        let (sigdt, _) = sigdt_with_degrees_for(dt, &r);
+        let (sigdt, degree) = sigdt_with_degrees_for(dt, spacing);
+        let (row_start, rows) = rows_of(dt, &sigdt, &degree);
         let limit = -MAX_SAMPLED_TURN.cos();
-        let mut around: Vec<u32> = Vec::new();
-        let mut directions: Vec<[f64; 2]> = Vec::new();
-        let picks: Vec<[u32; 2]> = (0..n as u32)
-            .map(|v| {
-                around.clear();
-                let sig = dt.incident(v).filter(|&h| sigdt.contains(h));
-                around.extend(sig.map(|h| dt.other(h, v)));
-                around.sort_unstable();
-                straightest_pair(dt.point(v), &around, |u| dt.point(u), limit, &mut directions)
-                    .unwrap_or([NONE; 2])
-            })
-            .collect();
+        let picks: Vec<[u32; 2]> = crate::parallel::map_range(n, |v| {
+            let around = &rows[row_start[v] as usize..row_start[v + 1] as usize];
+            straightest_pair(dt.point(v as u32), around, |u| dt.point(u), limit)
+                .unwrap_or([NONE; 2])
+        });
         let takes = |v: u32, w: u32| picks[v as usize].contains(&w);
         let mut start = vec![0u32; n + 1];
         for v in 0..n as u32 {
@@ -127,14 +124,36 @@ impl PairGraph {
     }
 }
 
-/// The two of `around` (sorted) whose directions from `p` make the widest angle, if its
-/// cosine is at most `limit`; ties go to the lowest indices.
+/// The SIGDT neighbours of every vertex in compressed rows (`degree` from the SIGDT test):
+/// vertex `v`'s are `rows[start[v]..start[v + 1]]`, in half-edge order.
+fn rows_of(dt: &Triangulation, sigdt: &EdgeMask, degree: &[u32]) -> (Vec<u32>, Vec<u32>) {
+    let n = dt.num_vertices();
+    let mut start = vec![0u32; n + 1];
+    for v in 0..n {
+        start[v + 1] = start[v] + degree[v];
+    }
+    let mut fill = start.clone();
+    let mut rows = vec![0u32; start[n] as usize];
+    for h in (0..dt.num_halfedges() as u32).filter(|&h| sigdt.contains(h)) {
+        let (a, b) = (dt.origin(h), dt.dest(h));
+        rows[fill[a as usize] as usize] = b;
+        fill[a as usize] += 1;
+        // A hull half-edge has no twin to list the edge at its other end.
+        if dt.twin(h) == EMPTY {
+            rows[fill[b as usize] as usize] = a;
+            fill[b as usize] += 1;
+        }
+    }
+    (start, rows)
+}
+
+/// The two of `around` whose directions from `p` make the widest angle, if its cosine is at
+/// most `limit`; ties go to the pair with the lowest indices.
 fn straightest_pair(
     p: Point,
     around: &[u32],
     point: impl Fn(u32) -> Point,
     limit: f64,
-    directions: &mut Vec<[f64; 2]>,
 ) -> Option<[u32; 2]> {
     let direction = |u: u32| {
         let q = point(u);
@@ -142,14 +161,28 @@ fn straightest_pair(
         let length = (dx * dx + dy * dy).sqrt();
         [dx / length, dy / length]
     };
-    directions.clear();
-    directions.extend(around.iter().map(|&u| direction(u)));
+    // SIGDT degrees are small on curve samples; larger rows are measured again per pair.
+    let mut directions = [[0.0f64; 2]; 16];
+    let cached = around.len() <= directions.len();
+    if cached {
+        for (d, &u) in directions.iter_mut().zip(around) {
+            *d = direction(u);
+        }
+    }
+    let at = |i: usize| if cached { directions[i] } else { direction(around[i]) };
     let mut best: Option<(f64, [u32; 2])> = None;
     for i in 0..around.len() {
+        let a = at(i);
         for k in i + 1..around.len() {
-            let cos = directions[i][0] * directions[k][0] + directions[i][1] * directions[k][1];
-            if best.map_or(true, |(c, _)| cos < c) {
-                best = Some((cos, [around[i], around[k]]));
+            let b = at(k);
+            let cos = a[0] * b[0] + a[1] * b[1];
+            let pair = [around[i].min(around[k]), around[i].max(around[k])];
+            let better = match best {
+                None => true,
+                Some((c, p)) => cos < c || (cos == c && pair < p),
+            };
+            if better {
+                best = Some((cos, pair));
             }
         }
     }
@@ -216,10 +249,11 @@ pub(super) fn network_vertices(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::proximity::nearest::nearest_vertex_distances;
 
     fn graph(points: &[Point]) -> (Triangulation, PairGraph) {
         let dt = Triangulation::new(points).unwrap();
-        let pairs = PairGraph::new(&dt);
+        let pairs = PairGraph::new(&dt, &nearest_vertex_distances(&dt));
         (dt, pairs)
     }
 
@@ -276,15 +310,9 @@ mod tests {
     fn straightest_pair_breaks_ties_by_index() {
         let around = [1, 2, 3, 4];
         let at = |u: u32| [[1.0, 0.0], [-1.0, 0.0], [0.0, 1.0], [0.0, -1.0]][u as usize - 1];
-        assert_eq!(straightest_pair([0.0, 0.0], &around, at, -0.5, &mut Vec::new()), Some([1, 2]));
-        assert_eq!(
-            straightest_pair([0.0, 0.0], &around[2..], at, -0.5, &mut Vec::new()),
-            Some([3, 4])
-        );
+        assert_eq!(straightest_pair([0.0, 0.0], &around, at, -0.5), Some([1, 2]));
+        assert_eq!(straightest_pair([0.0, 0.0], &around[2..], at, -0.5), Some([3, 4]));
         let bent = [[1.0, 0.0], [0.0, 1.0]];
-        assert_eq!(
-            straightest_pair([0.0, 0.0], &[1, 2], |u| bent[u as usize - 1], -0.5, &mut Vec::new()),
-            None
-        );
+        assert_eq!(straightest_pair([0.0, 0.0], &[1, 2], |u| bent[u as usize - 1], -0.5), None);
     }
 }

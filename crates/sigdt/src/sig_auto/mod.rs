@@ -122,6 +122,7 @@ use closed_component::closed_component;
 use continuation::MAX_SAMPLED_TURN;
 use reading::Reading;
 use spanning_forests::Forests;
+use std::borrow::Cow;
 #[doc(hidden)]
 pub use steps::Steps;
 
@@ -146,28 +147,31 @@ pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
 /// first when it passes the check.
 #[doc(hidden)]
 pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
-    let rec = checked_reading(dt, steps);
+    // Every vertex's nearest-neighbour distance, shared by the first round, the coarse
+    // reading and the junctions.
+    let spacing = (dt.shape() == Shape::Proper).then(|| nearest_vertex_distances(dt));
+    let rec = checked_reading(dt, steps, spacing.as_deref());
     let rec = match steps.skipped_samples {
         true => with_skipped_samples(dt, rec),
         false => rec,
     };
-    match steps.junctions {
-        true => with_junctions(dt, rec),
-        false => rec,
+    match (steps.junctions, &spacing) {
+        (true, Some(spacing)) => with_junctions(dt, rec, spacing),
+        _ => rec,
     }
 }
 
 /// `rec` with the components of the pair graph that hold a junction in place of its reading
 /// on their points (`junctions`), checked again; `rec` itself when there is none, or when a
 /// reading edge joins such a component to a point outside it.
-fn with_junctions(dt: &Triangulation, rec: Reconstruction) -> Reconstruction {
+fn with_junctions(dt: &Triangulation, rec: Reconstruction, spacing: &[f64]) -> Reconstruction {
     // A status names one way the result is off: points left inside stay that way, and
     // where the reading zigzags like noise, pairs of edges run straight by chance.
     let off = matches!(rec.status, Status::SculptingStuck { .. } | Status::Noisy);
     if dt.shape() != Shape::Proper || rec.vertices != Vertices::Input || off {
         return rec;
     }
-    let pairs = junctions::PairGraph::new(dt);
+    let pairs = junctions::PairGraph::new(dt, spacing);
     let n = dt.num_vertices();
     if !(0..n as u32).any(|v| pairs.degree(v) >= 3) {
         return rec;
@@ -219,8 +223,8 @@ fn turn_cos(a: Point, b: Point, c: Point) -> f64 {
 
 /// The reading, checked, with the wired-in outliers cut and the coarse reading where the
 /// check finds the curves broken (steps 11–13 of the module docs).
-fn checked_reading(dt: &Triangulation, steps: &Steps) -> Reconstruction {
-    let mut rec = read(dt, steps);
+fn checked_reading(dt: &Triangulation, steps: &Steps, spacing: Option<&[f64]>) -> Reconstruction {
+    let mut rec = read(dt, steps, spacing);
     rec.diagnosis = diagnose(dt, &rec);
     if steps.wired_outliers && rec.diagnosis.iter().any(|f| f.kind == FindingKind::DoublesBack) {
         if let Some(cut) = without_wired_outliers(dt, &rec) {
@@ -234,7 +238,8 @@ fn checked_reading(dt: &Triangulation, steps: &Steps) -> Reconstruction {
         return rec;
     }
     let left_out = outlier_vertices(&rec, &dt.vertex_of_inputs());
-    match coarse_reading::coarse_reading(dt, steps, &left_out) {
+    let Some(spacing) = spacing else { return rec };
+    match coarse_reading::coarse_reading(dt, steps, &left_out, spacing) {
         Some(fine) => {
             let pairs = chain_pairs(fine.loops.iter().map(|l| (l.as_slice(), true)));
             // Threaded through noisy points, the loops zigzag where the noise does: the
@@ -352,7 +357,8 @@ fn chain_pairs<'a>(chains: impl Iterator<Item = (&'a [u32], bool)>) -> Vec<[u32;
 }
 
 /// SIG-AUTO's reading of `dt` at the points' own scale (steps 1–6 of the module docs).
-fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
+/// `spacing`: the nearest-neighbour distances of `dt`'s vertices, when it is proper.
+fn read(dt: &Triangulation, steps: &Steps, spacing: Option<&[f64]>) -> Reconstruction {
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
@@ -383,7 +389,10 @@ fn read(dt: &Triangulation, steps: &Steps) -> Reconstruction {
                 Read { pairs: sub.line_edges().collect(), inside: Vec::new(), stats: line.stats }
             }
             None => {
-                let spacing = nearest_vertex_distances(sub);
+                let spacing = match (round, spacing) {
+                    (0, Some(spacing)) => Cow::Borrowed(spacing),
+                    _ => Cow::Owned(nearest_vertex_distances(sub)),
+                };
                 if round == 0 && steps.isolated {
                     isolated = isolated::isolated_pieces(dt, &spacing);
                 }
