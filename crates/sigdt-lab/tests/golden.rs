@@ -301,15 +301,18 @@ fn golden_real_shapes_optimal_transport() {
     real_shapes(|name| name == Method::OptimalTransport.name());
 }
 
-/// The drawings of curves that meet in `data/non-manifold` (issue 33): SIG-AUTO's exact
-/// list, which its junction step filled, and the graph filters that read junctions at all
-/// (NN-CRUST, CRUST, EMST), for comparison.
+/// Curves that meet (issue 33): the drawings of `data/non-manifold` and the real border and
+/// river networks of `data/networks`. SIG-AUTO's exact lists, which its junction step
+/// fills, and those of the graph filters that read junctions at all (NN-CRUST, CRUST, EMST),
+/// for comparison.
 #[test]
-fn golden_non_manifold() {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data/non-manifold");
-    for method in [Method::SigAuto, Method::NnCrust, Method::Crust, Method::Emst] {
-        let run = run(&dir, &options(method.name()));
-        println!("{}", report(&run, &format!("{} on data/non-manifold", method.name())));
-        check_golden(&run, "non-manifold", method.name());
+fn golden_networks() {
+    for folder in ["non-manifold", "networks"] {
+        let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data").join(folder);
+        for method in [Method::SigAuto, Method::NnCrust, Method::Crust, Method::Emst] {
+            let run = run(&dir, &options(method.name()));
+            println!("{}", report(&run, &format!("{} on data/{folder}", method.name())));
+            check_golden(&run, folder, method.name());
+        }
     }
 }
