@@ -17,7 +17,7 @@
 //!    samples of two curves that pass near each other and swapped neighbours (noise does
 //!    this), not curves that meet;
 //! 3. every branch at it is a curve of its own: it runs through at least [`MIN_BRANCH`]
-//!    samples before it ends or branches (a few outliers in a row beside a curve do not);
+//!    samples before it ends or branches (a few outliers in a row beside a curve do not).
 //!
 //! A component of the pair graph whose vertices of degree 3 or more are all junctions
 //! replaces SIG-AUTO's reading on its points when that reading breaks within two edges of
@@ -38,8 +38,8 @@ use crate::geometry::{squared_distance, Point};
 use crate::graph::EdgeMask;
 use crate::proximity::sigdt::sigdt_with_degrees_for;
 
-/// The fewest samples past a junction that make a branch (test 3 of the module docs):
-/// three samples show a curve's direction and its bending, and the junction adds one more.
+/// The fewest samples past a junction that make a branch (test 3 of the module docs): three
+/// show a curve's direction and how it bends.
 pub const MIN_BRANCH: usize = 3;
 
 /// No vertex, in a pair.
@@ -207,7 +207,7 @@ pub(super) fn junctions(dt: &Triangulation, pairs: &PairGraph) -> Vec<u32> {
 
 /// Whether each vertex lies in a component of the pair graph whose vertices of degree 3 or
 /// more are all `junctions` (sorted), at one of which at least SIG-AUTO's reading breaks
-/// (test 4 of the module docs: `breaks(v)` says whether it breaks at vertex `v`).
+/// (the last paragraph of the module docs: `breaks(v)` says whether it breaks at `v`).
 pub(super) fn network_vertices(
     pairs: &PairGraph,
     n: usize,

@@ -161,9 +161,10 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     }
 }
 
-/// `rec` with the components of the pair graph that hold a junction in place of its reading
-/// on their points (`junctions`), checked again; `rec` itself when there is none, or when a
-/// reading edge joins such a component to a point outside it.
+/// `rec` with the pair graph in place of its reading on the components whose branching
+/// vertices are all junctions and where the reading breaks beside one (`junctions`),
+/// checked again; `rec` itself when there is none, when a reading edge joins such a
+/// component to a point outside it, or when `rec` is `noisy` or stuck.
 fn with_junctions(dt: &Triangulation, rec: Reconstruction, spacing: &[f64]) -> Reconstruction {
     // A status names one way the result is off: points left inside stay that way, and
     // where the reading zigzags like noise, pairs of edges run straight by chance.
