@@ -186,6 +186,8 @@ report: build py-build
 	$(VPY) -m sigdt.baselines data/networks $(TARGET_DIR)/concave-hull-networks
 	$(SIGDT) bench data/networks --out $(REPORT)/networks \
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-networks
+	$(VPY) python/bench/network_scores.py $(NON_MANIFOLD) data/networks \
+	  --out $(REPORT)/networks/scores.md
 	$(VPY) -m sigdt.baselines data/outlines $(TARGET_DIR)/concave-hull-outlines --ratio 0.05
 	$(SIGDT) bench data/outlines --out $(REPORT)/outlines \
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-outlines

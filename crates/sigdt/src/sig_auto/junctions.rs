@@ -3,7 +3,8 @@
 //!
 //! Every vertex takes the pair of its SIGDT edges that runs straightest through it, when
 //! that pair turns by at most [`MAX_SAMPLED_TURN`] (a sample of a curve sampled with ε < 1
-//! turns by less; `continuation`). The union of these *straight pairs* is the pair graph. On
+//! turns by less; `continuation`), among the edges not hidden behind a shorter one in
+//! nearly the same direction ([`SHADOW`]). The union of these *straight pairs* is the pair graph. On
 //! a sampled curve every sample takes its two curve neighbours, so the pair graph is the
 //! curve. Where curves meet in a sample `j`, the samples next to `j` on every curve take `j`
 //! in their pairs: `j` gets degree 4 where two curves cross, 3 where a curve ends on
@@ -24,7 +25,7 @@
 //! one of its junctions (a point there is left out, ends a path or turns by more than
 //! [`MAX_SAMPLED_TURN`]) and no reading edge joins the component to a point outside it.
 //! Where the reading passes smoothly, it reads the points as the paper's sampling condition
-//! says they are, and is kept.
+//! says they are, and is kept; so it is where the sampling check finds the network broken.
 //!
 //! # Complexity
 //! O(n + Σ deg²) time over the SIGDT degrees (O(n) on curve samples, whose SIGDT degrees
@@ -41,6 +42,13 @@ use crate::proximity::sigdt::sigdt_with_degrees_for;
 /// The fewest samples past a junction that make a branch (test 3 of the module docs): three
 /// show a curve's direction and how it bends.
 pub const MIN_BRANCH: usize = 3;
+
+/// Seen from a vertex, a neighbour within this angle of the direction of a nearer one lies
+/// behind it: half of [`MAX_SAMPLED_TURN`], the most by which the directions from a sample
+/// to its next and its next but one differ on a curve sampled with ε < 1. On evenly spaced
+/// straight runs SIGDT keeps the edges that skip a sample (their length ties `r(p) + r(q)`);
+/// they are hidden so.
+const SHADOW: f64 = MAX_SAMPLED_TURN / 2.0;
 
 /// No vertex, in a pair.
 const NONE: u32 = u32::MAX;
@@ -148,34 +156,48 @@ fn rows_of(dt: &Triangulation, sigdt: &EdgeMask, degree: &[u32]) -> (Vec<u32>, V
 }
 
 /// The two of `around` whose directions from `p` make the widest angle, if its cosine is at
-/// most `limit`; ties go to the pair with the lowest indices.
+/// most `limit`; ties go to the pair with the lowest indices. A neighbour within
+/// [`SHADOW`] of the direction of a nearer one is hidden behind it and takes no part.
 fn straightest_pair(
     p: Point,
     around: &[u32],
     point: impl Fn(u32) -> Point,
     limit: f64,
 ) -> Option<[u32; 2]> {
-    let direction = |u: u32| {
+    let measure = |u: u32| {
         let q = point(u);
         let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
         let length = (dx * dx + dy * dy).sqrt();
-        [dx / length, dy / length]
+        ([dx / length, dy / length], length)
     };
-    // SIGDT degrees are small on curve samples; larger rows are measured again per pair.
-    let mut directions = [[0.0f64; 2]; 16];
-    let cached = around.len() <= directions.len();
-    if cached {
-        for (d, &u) in directions.iter_mut().zip(around) {
-            *d = direction(u);
-        }
+    // SIGDT degrees are small on curve samples: no allocation for up to 16 neighbours.
+    // Each ray: direction, length, and whether it is hidden.
+    let mut fixed = [([0.0f64; 2], 0.0f64, false); 16];
+    let mut grown = Vec::new();
+    let rays: &mut [([f64; 2], f64, bool)] = if around.len() <= fixed.len() {
+        &mut fixed[..around.len()]
+    } else {
+        grown.resize(around.len(), ([0.0f64; 2], 0.0f64, false));
+        &mut grown
+    };
+    for (ray, &u) in rays.iter_mut().zip(around) {
+        let (direction, length) = measure(u);
+        *ray = (direction, length, false);
     }
-    let at = |i: usize| if cached { directions[i] } else { direction(around[i]) };
+    let shadow = SHADOW.cos();
+    let dot = |a: [f64; 2], b: [f64; 2]| a[0] * b[0] + a[1] * b[1];
+    for i in 0..rays.len() {
+        let (direction, length, _) = rays[i];
+        rays[i].2 = (0..rays.len()).any(|k| {
+            k != i
+                && dot(direction, rays[k].0) > shadow
+                && (rays[k].1, around[k]) < (length, around[i])
+        });
+    }
     let mut best: Option<(f64, [u32; 2])> = None;
-    for i in 0..around.len() {
-        let a = at(i);
-        for k in i + 1..around.len() {
-            let b = at(k);
-            let cos = a[0] * b[0] + a[1] * b[1];
+    for i in (0..rays.len()).filter(|&i| !rays[i].2) {
+        for k in (i + 1..rays.len()).filter(|&k| !rays[k].2) {
+            let cos = dot(rays[i].0, rays[k].0);
             let pair = [around[i].min(around[k]), around[i].max(around[k])];
             let better = match best {
                 None => true,
@@ -282,6 +304,30 @@ mod tests {
         assert!(network_vertices(&pairs, n, &found, |_| true).iter().all(|&x| x));
         // Where the reading passes smoothly, it is kept.
         assert!(!network_vertices(&pairs, n, &found, |_| false).contains(&true));
+    }
+
+    #[test]
+    fn an_evenly_spaced_straight_tee_is_one_junction() {
+        // On evenly spaced straight runs SIGDT also keeps the edges that skip a sample, and
+        // after rounding they can run straighter than the curve's own.
+        for turn in 0..12 {
+            let (sin, cos) = (0.13 * turn as f64).sin_cos();
+            let mut points: Vec<Point> = (-8..=8).map(|i| [i as f64, 0.0]).collect();
+            points.extend((1..=8).map(|i| [0.0, i as f64]));
+            for p in &mut points {
+                *p = [p[0] * cos - p[1] * sin + 3.7, p[0] * sin + p[1] * cos - 1.3];
+            }
+            let (dt, pairs) = graph(&points);
+            let vertex_of = dt.vertex_of_inputs();
+            let degree = |i: usize| pairs.degree(vertex_of[i]);
+            assert_eq!(degree(8), 3, "the junction at the origin, turn {turn}");
+            for end in [0, 16, 24] {
+                assert_eq!(degree(end), 1, "turn {turn}");
+            }
+            let others = (0..points.len()).filter(|i| ![0, 8, 16, 24].contains(i));
+            assert!(others.clone().all(|i| degree(i) == 2), "turn {turn}");
+            assert_eq!(junctions(&dt, &pairs), vec![vertex_of[8]]);
+        }
     }
 
     #[test]

@@ -164,7 +164,8 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
 /// `rec` with the pair graph in place of its reading on the components whose branching
 /// vertices are all junctions and where the reading breaks beside one (`junctions`),
 /// checked again; `rec` itself when there is none, when a reading edge joins such a
-/// component to a point outside it, or when `rec` is `noisy` or stuck.
+/// component to a point outside it, when `rec` is `noisy` or stuck, or when the sampling
+/// check finds the network broken.
 fn with_junctions(dt: &Triangulation, rec: Reconstruction, spacing: &[f64]) -> Reconstruction {
     // A status names one way the result is off: points left inside stay that way, and
     // where the reading zigzags like noise, pairs of edges run straight by chance.
@@ -213,7 +214,12 @@ fn with_junctions(dt: &Triangulation, rec: Reconstruction, spacing: &[f64]) -> R
         outlier_vertices(&rec, &vertex_of).into_iter().filter(|&v| !inside(v)).collect();
     let mut read = finish(dt, network, Vec::new(), &outliers, rec.stats);
     read.diagnosis = diagnose(dt, &read);
-    read
+    // A network the sampling check finds broken (it doubles back, or its edges reach over
+    // points) is no better read than the curves were.
+    match curves_fail(&read.diagnosis) {
+        true => rec,
+        false => read,
+    }
 }
 
 /// The cosine of the turn at `b` from `a` to `c`: 1 straight on, -1 back.

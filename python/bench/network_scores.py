@@ -1,0 +1,125 @@
+"""Scores every method on labelled networks: exact rate, edge precision / recall / F1, and
+junctions found right (issue 33). Writes a Markdown table.
+
+Run from the repository root after ``make build`` (``make report`` runs it)::
+
+    .venv/bin/python python/bench/network_scores.py data/non-manifold data/networks \\
+        --out docs/report/networks/scores.md
+
+Each case is reconstructed by ``target/release/sigdt reconstruct CASE.xy --method M``.
+Edge precision and recall are summed over the cases of a folder (edges right over output
+edges, and over ground-truth edges). A junction is a ground-truth vertex of degree 3 or more;
+the output finds it right when the same vertex has the same degree there. Junction precision
+is junctions found right over the output's vertices of degree 3 or more, recall over the
+ground truth's.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+from collections import Counter
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+METHODS = [
+    "sig-auto",
+    "sig-connect2d",
+    "connect2d",
+    "crust",
+    "nn-crust",
+    "hnn-crust",
+    "crawl",
+    "discur",
+    "peel",
+    "emst",
+]
+
+
+def cli_binary() -> Path:
+    target = Path(os.environ.get("CARGO_TARGET_DIR") or ROOT / "target")
+    return (target if target.is_absolute() else ROOT / target) / "release" / "sigdt"
+
+
+def edges_of(text: str) -> set[tuple[int, int]]:
+    pairs = (line.split() for line in text.splitlines() if line.strip() and line[0] != "#")
+    return {(min(int(a), int(b)), max(int(a), int(b))) for a, b in pairs}
+
+
+def degrees(edges: set[tuple[int, int]]) -> Counter:
+    count: Counter = Counter()
+    for a, b in edges:
+        count[a] += 1
+        count[b] += 1
+    return count
+
+
+def score(cli: Path, folder: Path, method: str) -> Counter:
+    total: Counter = Counter()
+    for xy in sorted(folder.glob("*.xy")):
+        truth = edges_of(xy.with_suffix(".gt").read_text())
+        run = subprocess.run(
+            [str(cli), "reconstruct", str(xy), "--format", "edges", "--method", method],
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+        found = edges_of(run.stdout)
+        true_degree, found_degree = degrees(truth), degrees(found)
+        true_junctions = {v for v, d in true_degree.items() if d >= 3}
+        found_junctions = {v for v, d in found_degree.items() if d >= 3}
+        total["cases"] += 1
+        total["exact"] += found == truth
+        total["right"] += len(found & truth)
+        total["output"] += len(found)
+        total["truth"] += len(truth)
+        total["junctions"] += len(true_junctions)
+        total["found"] += len(found_junctions)
+        total["found_right"] += sum(found_degree[v] == true_degree[v] for v in true_junctions)
+    return total
+
+
+def ratio(a: int, b: int) -> str:
+    return f"{a / b:.3f}" if b else "–"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("folders", nargs="+", type=Path)
+    parser.add_argument("--out", type=Path, required=True)
+    args = parser.parse_args()
+    cli = cli_binary()
+    lines = [
+        "# Networks: edges and junctions",
+        "",
+        "Written by `python/bench/network_scores.py` (`make report`). Exact: output equals the",
+        "ground truth. Edge P / R / F1: summed over the cases. Junctions: ground-truth vertices",
+        "of degree 3 or more; found right when the output gives the same vertex the same",
+        "degree. Junction P: found right over the output's vertices of degree 3 or more;",
+        "R: over the ground truth's.",
+        "",
+    ]
+    for folder in args.folders:
+        lines += [
+            f"## `{folder.as_posix()}`",
+            "",
+            "| method | exact | edge P | edge R | edge F1 | junction P | junction R |",
+            "| :-- | --: | --: | --: | --: | --: | --: |",
+        ]
+        for method in METHODS:
+            t = score(cli, folder, method)
+            p, r = t["right"] / max(t["output"], 1), t["right"] / max(t["truth"], 1)
+            f1 = 2 * p * r / (p + r) if p + r else 0.0
+            lines.append(
+                f"| `{method}` | {100 * t['exact'] / t['cases']:.1f} % ({t['exact']}/{t['cases']}) "
+                f"| {p:.3f} | {r:.3f} | {f1:.3f} | {ratio(t['found_right'], t['found'])} "
+                f"| {ratio(t['found_right'], t['junctions'])} |"
+            )
+        lines.append("")
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    args.out.write_text("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
