@@ -68,6 +68,9 @@ class Reconstruction:
         graph-filter methods (``"crawl"``, ``"peel"``, ...) for open curves; with status
         ``"network"`` paths end at junctions (a path may start and end at the same
         junction).
+    junctions : numpy.ndarray
+        The points with three edges or more, where curves cross, end on one another or
+        share an end (status ``"network"``), sorted int64 indices; empty otherwise.
     polygons : list of tuple
         The loops grouped into polygons with holes, ``(shell, holes)`` indices into
         ``loops``; see the property.
@@ -139,6 +142,13 @@ class Reconstruction:
     @property
     def paths(self) -> list[Indices]:
         return _split(self._fields["path_vertices"], self._fields["path_offsets"])
+
+    @property
+    def junctions(self) -> Indices:
+        edges = self.edges
+        if len(edges) == 0:
+            return np.empty(0, dtype=np.int64)
+        return np.flatnonzero(np.bincount(edges.ravel()) >= 3).astype(np.int64)
 
     @property
     def status(self) -> Status:

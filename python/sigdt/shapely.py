@@ -121,8 +121,9 @@ def to_geojson(rec: Reconstruction) -> GeoJsonFeature:
     properties are ``status``, ``points`` (the input's count), ``vertices`` (only when the
     method moved the points or placed its own: the count of the positions the geometry
     uses), ``edges``, ``loops``, ``paths``, ``duplicates``, ``left_out`` and
-    ``left_out_reasons`` (when points were left out), ``warning`` and ``diagnosis`` (when
-    the sampling check found something). A coordinate that is not finite is ``null``.
+    ``left_out_reasons`` (when points were left out), ``junctions`` (the points with three
+    edges or more, when there are), ``warning`` and ``diagnosis`` (when the sampling check
+    found something). A coordinate that is not finite is ``null``.
     """
     return cast("GeoJsonFeature", json.loads(_text(rec, "geojson")))
 

@@ -513,3 +513,16 @@ def test_optimal_transport_draws_on_its_own_vertices():
     feature = rec.to_geojson()
     lines = feature["geometry"]["coordinates"]
     assert all((rec.vertices == xy).all(axis=1).any() for line in lines for xy in line)
+
+
+def test_curves_that_meet_read_as_a_network_with_its_junction() -> None:
+    # A T: a bar of 17 samples with a stem of 8 ending on its middle (point 8).
+    bar = [[float(i), 0.0] for i in range(-8, 9)]
+    stem = [[0.1 * np.sin(i), float(i)] for i in range(1, 9)]
+    with pytest.warns(sigdt.SigdtWarning, match="junctions"):
+        rec = sigdt.reconstruct(bar + stem)
+    assert rec.status == "network"
+    assert rec.junctions.tolist() == [8]
+    assert len(rec.edges) == 24
+    assert all(path[0] == 8 or path[-1] == 8 for path in rec.paths)
+    assert sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]]).junctions.tolist() == []

@@ -200,6 +200,7 @@ fn summary(options: &Options, rec: &Reconstruction, ms: f64, read_as: &str) {
         format!("edges:                     {}", rec.edges.len()),
         format!("loops:                     {}", rec.loops.len()),
         format!("paths:                     {}", rec.paths.len()),
+        format!("junctions:                 {}", rec.junctions().len()),
         format!("left out:                  {}", left_out_summary(rec)),
         format!("status:                    {} ({})", rec.status.name(), rec.status),
         format!("time:                      {ms:.3} ms"),

@@ -101,6 +101,7 @@ pub fn render_svg(points: &[Point], layers: &Layers, options: &RenderOptions) ->
     let gt = layers.gt.map(clean);
     let diff = result.as_deref().zip(gt.as_deref()).map(|(r, g)| compare(r, g));
     let lonely = layers.result.map_or_else(Vec::new, |rec| lonely(points, rec, result.as_deref()));
+    let junctions = layers.result.map_or_else(Vec::new, Reconstruction::junctions);
     let others = dt.is_some()
         || layers.sig.is_some()
         || sigdt.is_some()
@@ -158,6 +159,9 @@ pub fn render_svg(points: &[Point], layers: &Layers, options: &RenderOptions) ->
         }
         if !lonely.is_empty() {
             add(Swatch::Ring(INK, ring), format!("not on result {}", lonely.len()));
+        }
+        if !junctions.is_empty() {
+            add(Swatch::Ring(ORANGE, ring), format!("junctions {}", junctions.len()));
         }
     } else if let Some(e) = &gt {
         add(Swatch::Line(TRUTH, line, true), format!("ground truth {}", e.len()));
@@ -284,6 +288,15 @@ pub fn render_svg(points: &[Point], layers: &Layers, options: &RenderOptions) ->
             .filter_map(|&i| px[i])
             .for_each(|p| d.circle(p, (100.0 * ring).round() as i64));
         stroke(&mut out, d.finish(), INK, 1.2, "");
+    }
+    if !junctions.is_empty() {
+        let mut d = PathData::default();
+        let radius = (100.0 * 1.5 * ring).round() as i64;
+        junctions
+            .iter()
+            .filter_map(|&i| px.get(i).copied().flatten())
+            .for_each(|p| d.circle(p, radius));
+        stroke(&mut out, d.finish(), ORANGE, 2.0, "");
     }
     if options.legend {
         legend::draw(&mut out, &entries, width, legend_top);

@@ -74,6 +74,31 @@ impl Reconstruction {
         self.status.is_warning() || !self.diagnosis.is_empty()
     }
 
+    /// The junctions: vertices with three edges or more, where curves cross, end on one
+    /// another or share an end (status [`Status::Network`]), sorted. Indices as in
+    /// [`edges`](Self::edges).
+    ///
+    /// ```
+    /// // A T: a bar of 17 samples with a stem of 8 ending on its middle.
+    /// let mut points: Vec<[f64; 2]> = (-8..=8).map(|i| [i as f64, 0.0]).collect();
+    /// points.extend((1..=8).map(|i| [0.1 * (i as f64).sin(), i as f64]));
+    /// let rec = sigdt::reconstruct(&points, &sigdt::Options::default()).unwrap();
+    /// assert_eq!(rec.status, sigdt::Status::Network);
+    /// assert_eq!(rec.junctions(), vec![8]);
+    /// ```
+    pub fn junctions(&self) -> Vec<usize> {
+        let mut degree: Vec<u8> = Vec::new();
+        for &[i, j] in &self.edges {
+            let needed = i.max(j) + 1;
+            if degree.len() < needed {
+                degree.resize(needed, 0);
+            }
+            degree[i] = degree[i].saturating_add(1);
+            degree[j] = degree[j].saturating_add(1);
+        }
+        (0..degree.len()).filter(|&v| degree[v] >= 3).collect()
+    }
+
     /// The coordinates the edges, loops and paths index: `input` (the caller's points),
     /// unless the method moved them or placed its own ([`Vertices`]).
     pub fn vertex_positions<'a>(&'a self, input: &'a [Point]) -> &'a [Point] {

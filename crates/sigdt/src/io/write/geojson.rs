@@ -78,6 +78,11 @@ pub(super) fn geojson(
         write!(out, r#", "left_out": [{}]"#, indices.join(", "))?;
         write!(out, r#", "left_out_reasons": [{}]"#, reasons.join(", "))?;
     }
+    let junctions = rec.junctions();
+    if !junctions.is_empty() {
+        let indices: Vec<_> = junctions.iter().map(usize::to_string).collect();
+        write!(out, r#", "junctions": [{}]"#, indices.join(", "))?;
+    }
     write!(out, r#", "warning": {}"#, rec.warns())?;
     if !rec.diagnosis.is_empty() {
         let findings: Vec<String> = rec.diagnosis.iter().map(finding_object).collect();
