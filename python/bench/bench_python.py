@@ -18,8 +18,9 @@ faults that a warm process does not; comparing it with a warm Python call would 
 Python. So the Python side is measured the same way: the first call in a fresh interpreter.
 CLI and Python runs alternate, 7 of each, and the medians are compared. The overhead is
 ``python / rust - 1``. For information, the warm medians in this process (7 calls after
-one warm-up) of ``sigdt._core.reconstruct`` (binding only) and ``sigdt.reconstruct`` are
-printed too; their difference is the pure-Python wrapper.
+one warm-up) of ``sigdt._core.reconstruct`` (binding only) and ``sigdt.reconstruct``, both
+with ``method="sig-connect2d"``, are printed too; their difference is the pure-Python
+wrapper.
 
 (b) **Batch throughput.** 10,000 seeded radial-Fourier blobs of 240 to 280 points (shuffled),
 converted to float64 arrays beforehand. Sets per second (median of 3 runs) of the serial
@@ -151,7 +152,7 @@ def main() -> None:
     rust_ms, python_ms = statistics.median(rust), statistics.median(python)
     overhead = python_ms / rust_ms - 1.0
     core_warm = warm_ms(lambda: sigdt._core.reconstruct(points, "sig-connect2d", True))
-    api_warm = warm_ms(lambda: sigdt.reconstruct(points))
+    api_warm = warm_ms(lambda: sigdt.reconstruct(points, method="sig-connect2d"))
 
     # (b) throughput
     sets = blob_sets(args.sets, seed=7)
