@@ -15,8 +15,8 @@
 //!
 //! **In process** (one row per input, order and size):
 //! - `Delaunay ms`: median wall time of [`Triangulation::new`] on one thread.
-//! - `total ms`: median wall time of [`sigdt::reconstruct`] (default options, which builds its
-//!   own triangulation) on one thread; `total/Delaunay` their ratio.
+//! - `total ms`: median wall time of [`sigdt::reconstruct`] with SIG-CONNECT2D (which builds
+//!   its own triangulation) on one thread; `total/Delaunay` their ratio.
 //! - `CGAL ms`: median time of a bare CGAL 2D Delaunay triangulation of the same points
 //!   (`Delaunay_triangulation_2`, Epick, range insert with its spatial sort), measured inside
 //!   the external tool `tools/cgal-delaunay` (`--cgal PATH`; the column says `n/a` without it);
@@ -36,8 +36,8 @@
 //! `3..=50`; `--reps R` fixes it.
 //!
 //! **Whole process** (with `--cli PATH`, the `sigdt` binary, for `n >= 1e5`): the points are
-//! written to a temporary file; `sigdt reconstruct FILE -o OUT` with one thread
-//! (`RAYON_NUM_THREADS=1`) and with `T`, and `cgal-delaunay FILE` (read and triangulate) run
+//! written to a temporary file; `sigdt reconstruct FILE --method sig-connect2d -o OUT` with
+//! one thread (`RAYON_NUM_THREADS=1`) and with `T`, and `cgal-delaunay FILE` (read and triangulate) run
 //! in turn `R` times under `/usr/bin/time`: median wall seconds, and the peak resident memory
 //! (`%M`) per point of `sigdt reconstruct`; then `sigdt view FILE -o PAGE` (its median time
 //! and the page's size) and `sigdt render FILE -o PICTURE.png`, each with `T` threads.
@@ -250,7 +250,9 @@ fn whole_process(
         }
     };
     let o = Path::new("-o");
-    let reconstruct = [Path::new("reconstruct"), file, o, &out];
+    // The table is SIG-CONNECT2D's, as the in-process one; the CLI's default is SIG-AUTO.
+    let (method, name) = (Path::new("--method"), Path::new("sig-connect2d"));
+    let reconstruct = [Path::new("reconstruct"), file, method, name, o, &out];
     let view = [Path::new("view"), file, o, &page];
     let render = [Path::new("render"), file, o, &picture];
     let reps = args.reps.unwrap_or(MIN_REPS);
