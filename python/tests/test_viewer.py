@@ -475,3 +475,29 @@ def test_page_without_a_trace(browser, pages):
     assert (view.canvas() != canvas).any(), "showing the SIG circles changed nothing"
     view.check_quiet()
     page.close()
+
+
+def test_junctions_are_ringed(browser, cli, repo_root, tmp_path):
+    """A network's junctions get a layer of their own, on at start, that can be switched off;
+    a polygon has none (the bundled example's layer is disabled)."""
+    theta = repo_root / "data" / "non-manifold" / "nm_theta_00.xy"
+    out = tmp_path / "theta.html"
+    run = subprocess.run(
+        [cli, "view", theta, "-o", out], capture_output=True, text=True, check=False
+    )
+    assert run.returncode == 0, run.stderr
+    view = Page(browser, out)
+    page = view.page
+    assert page.is_checked("#junctions")
+    row = page.locator("label.layer", has=page.locator("#junctions"))
+    assert row.locator(".count").inner_text() == "2"
+    shown = view.canvas()
+    page.click("#junctions")
+    view.settle()
+    assert not page.is_checked("#junctions")
+    assert (view.canvas() != shown).any()
+    assert view.messages == []
+    page.close()
+    plain = Page(browser, viewer_page(cli, repo_root, tmp_path / "plain.html"))
+    assert plain.page.is_disabled("#junctions")
+    plain.page.close()

@@ -19,10 +19,11 @@ const LAYERS = [
   { id: "interior", label: "interior (step)", color: "fill", fill: true, on: [1, 0] },
   { id: "current", label: "boundary (step)", color: "step_boundary", width: 1.6, on: [1, 0] },
   { id: "changed", label: "last step's triangle", color: "inflate", fill: true, on: [1, 0] },
+  { id: "junctions", label: "junctions", color: "boundary", width: 2, on: [1, 1] },
 ];
 // The step boundary is drawn under the result with the same width: at the end they coincide
 // and the result shows as `sigdt render` draws it.
-const DRAW_ORDER = ["interior", "gt", "dt", "sigdt2", "sigdt", "sig", "boundary", "current", "result", "changed", "points"];
+const DRAW_ORDER = ["interior", "gt", "dt", "sigdt2", "sigdt", "sig", "boundary", "current", "result", "changed", "points", "junctions"];
 // A triangle thinner than this on screen (pixels) also gets a ring, so a sliver can be found.
 const SLIVER_PX = 4;
 
@@ -129,6 +130,7 @@ View.prototype.draw = function (ctx = this.ctx, hover = true) {
     else if (id === "interior" && trace) this.drawInterior(ctx, style);
     else if (id === "current" && trace) this.strokeEdges(ctx, this.currentBoundary().edges, style);
     else if (id === "changed" && trace) this.drawChanged(ctx);
+    else if (id === "junctions") this.drawJunctions(ctx, style);
     else if (model.edges[id]) this.strokeEdges(ctx, model.edges[id], style);
   }
   ctx.globalAlpha = 1;
@@ -221,6 +223,19 @@ View.prototype.drawPoints = function (ctx, style) {
     }
   }
   ctx.fill();
+};
+
+/** A ring around every junction of the result (a point with three edges or more). */
+View.prototype.drawJunctions = function (ctx, style) {
+  const { sx, sy } = this;
+  ctx.beginPath();
+  for (const j of this.model.junctions || []) {
+    ctx.moveTo(sx[j] + 8, sy[j]);
+    ctx.arc(sx[j], sy[j], 8, 0, 2 * Math.PI);
+  }
+  ctx.lineWidth = style.width;
+  ctx.strokeStyle = style.color;
+  ctx.stroke();
 };
 
 View.prototype.drawCircles = function (ctx, style) {

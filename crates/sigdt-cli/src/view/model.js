@@ -128,6 +128,16 @@ function Model(data) {
     this.edges[name] = layers[name] === null ? null : this.list.select(bitsOf(layers[name], this.list.length, name));
   }
   this.trace = data.trace ? new Trace(data.trace, this.tri, this.list) : null;
+  this.junctions = this.edges.result ? junctionsOf(this.edges.result, n) : null;
+}
+
+/** The points with three edges or more in a flat edge array [i0, j0, i1, j1, ...]. */
+function junctionsOf(edges, n) {
+  const degree = new Uint32Array(n);
+  for (let k = 0; k < edges.length; k++) degree[edges[k]]++;
+  const out = [];
+  for (let v = 0; v < n; v++) if (degree[v] >= 3) out.push(v);
+  return out;
 }
 
 /** [minX, minY, maxX, maxY] of the points (a unit box around the origin if there are none). */

@@ -18,6 +18,7 @@ function buildLayers(model, view) {
     interior: trace ? trace.labels.length : null,
     current: trace ? trace.steps : null,
     changed: trace ? trace.steps : null,
+    junctions: model.junctions && model.junctions.length ? model.junctions.length : null,
   };
   const stepLayers = ["interior", "current", "changed"];
   for (const layer of LAYERS) {
@@ -31,7 +32,8 @@ function buildLayers(model, view) {
     input.disabled = size === null || (trace === null && stepLayers.includes(layer.id));
     input.checked = !input.disabled && Boolean(layer.on[trace ? 0 : 1]);
     const swatch = document.createElement("span");
-    swatch.className = `swatch swatch-${layer.fill ? "fill" : layer.id === "points" ? "dot" : layer.id === "sig" ? "ring" : "line"}`;
+    const ring = layer.id === "sig" || layer.id === "junctions";
+    swatch.className = `swatch swatch-${layer.fill ? "fill" : layer.id === "points" ? "dot" : ring ? "ring" : "line"}`;
     swatch.style.setProperty("--c", view.styles[layer.id].color);
     swatch.style.setProperty("--w", `${Math.min(layer.width || 2, 6)}px`);
     if (layer.dash) swatch.classList.add("dashed");
