@@ -107,7 +107,7 @@ mod steps;
 mod wired_outliers;
 
 use crate::delaunay::{Shape, Triangulation};
-use crate::geometry::{distance, Point};
+use crate::geometry::distance;
 use crate::proximity::nearest::nearest_vertex_distances;
 use crate::proximity::sigdt::TIE_SLACK;
 use crate::result::{
@@ -173,8 +173,19 @@ fn with_junctions(dt: &Triangulation, rec: Reconstruction, spacing: &[f64]) -> R
     if dt.shape() != Shape::Proper || rec.vertices != Vertices::Input || off {
         return rec;
     }
-    let pairs = junctions::PairGraph::new(dt, spacing);
+    let vertex_of = dt.vertex_of_inputs();
+    let read_pairs: Vec<[u32; 2]> =
+        rec.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
+    let reading = Reading::new(dt, &read_pairs);
+    let cos_limit = MAX_SAMPLED_TURN.cos();
+    let breaks = |v: u32| reading.degree(v) != 2 || reading.turns_more_than(v, cos_limit);
+    // Where the reading breaks nowhere, no network can replace it: the pair graph is not
+    // built (most curves).
     let n = dt.num_vertices();
+    if !(0..n as u32).any(breaks) {
+        return rec;
+    }
+    let pairs = junctions::PairGraph::new(dt, spacing);
     if !(0..n as u32).any(|v| pairs.degree(v) >= 3) {
         return rec;
     }
@@ -182,31 +193,12 @@ fn with_junctions(dt: &Triangulation, rec: Reconstruction, spacing: &[f64]) -> R
     if found.is_empty() {
         return rec;
     }
-    let vertex_of = dt.vertex_of_inputs();
-    let reading: Vec<[u32; 2]> =
-        rec.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
-    let mut around = vec![[u32::MAX; 2]; n];
-    let mut degree = vec![0u8; n];
-    for &[a, b] in &reading {
-        for (v, w) in [(a, b), (b, a)] {
-            let d = &mut degree[v as usize];
-            if (*d as usize) < 2 {
-                around[v as usize][*d as usize] = w;
-            }
-            *d = d.saturating_add(1);
-        }
-    }
-    let cos_limit = MAX_SAMPLED_TURN.cos();
-    let breaks = |v: u32| {
-        let [a, b] = around[v as usize];
-        degree[v as usize] != 2 || turn_cos(dt.point(a), dt.point(v), dt.point(b)) < cos_limit
-    };
     let network = junctions::network_vertices(&pairs, n, &found, breaks);
     let inside = |v: u32| network[v as usize];
-    if !network.contains(&true) || reading.iter().any(|&[a, b]| inside(a) != inside(b)) {
+    if !network.contains(&true) || read_pairs.iter().any(|&[a, b]| inside(a) != inside(b)) {
         return rec;
     }
-    let mut network: Vec<[u32; 2]> = reading.into_iter().filter(|&[a, _]| !inside(a)).collect();
+    let mut network: Vec<[u32; 2]> = read_pairs.into_iter().filter(|&[a, _]| !inside(a)).collect();
     for v in (0..n as u32).filter(|&v| inside(v)) {
         network.extend(pairs.neighbours(v).iter().filter(|&&w| v < w).map(|&w| [v, w]));
     }
@@ -220,12 +212,6 @@ fn with_junctions(dt: &Triangulation, rec: Reconstruction, spacing: &[f64]) -> R
         true => rec,
         false => read,
     }
-}
-
-/// The cosine of the turn at `b` from `a` to `c`: 1 straight on, -1 back.
-fn turn_cos(a: Point, b: Point, c: Point) -> f64 {
-    let (u, w) = ([b[0] - a[0], b[1] - a[1]], [c[0] - b[0], c[1] - b[1]]);
-    (u[0] * w[0] + u[1] * w[1]) / ((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1])).sqrt()
 }
 
 /// The reading, checked, with the wired-in outliers cut and the coarse reading where the
