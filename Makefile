@@ -188,6 +188,8 @@ report: build py-build
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-networks
 	$(VPY) python/bench/network_scores.py $(NON_MANIFOLD) data/networks \
 	  --out $(REPORT)/networks/scores.md
+	$(VPY) python/bench/network_failures.py $(NON_MANIFOLD) data/networks \
+	  --out $(REPORT)/networks/failures.md
 	$(VPY) -m sigdt.baselines data/outlines $(TARGET_DIR)/concave-hull-outlines --ratio 0.05
 	$(SIGDT) bench data/outlines --out $(REPORT)/outlines \
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-outlines

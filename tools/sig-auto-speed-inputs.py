@@ -1,7 +1,9 @@
 """Writes the inputs of SIG-AUTO's speed figures (README "Speed and memory",
 docs/algorithms.md section 7.3): a smooth closed curve of 10^6 points sampled evenly by arc
 length with +-0.1 spacing jitter along it, and a 10^5-point curve with +-0.3 jitter along
-it and Gaussian noise of a quarter of the spacing across, both shuffled.
+it and Gaussian noise of a quarter of the spacing across, both shuffled; and a network of
+about 10^6 points (issue 33): the lines of a square grid, warped into smooth curves that
+cross at about 53 000 shared samples, shuffled.
 
 usage: .venv/bin/python tools/sig-auto-speed-inputs.py OUT_DIR
 then:  sigdt reconstruct OUT_DIR/even1e6.xy --threads 1 -o OUT.edges   (and --method
@@ -35,6 +37,22 @@ def sample(n: int, jitter: float, noise: float, seed: int) -> np.ndarray:
     return np.column_stack([px, py])[rng.permutation(n)]
 
 
+def warped_grid(cells: int, per_side: int, seed: int) -> np.ndarray:
+    """The lines of a `cells` x `cells` grid sampled `per_side` times a cell side, every
+    crossing a sample shared by its two lines, warped by a smooth map that bends each line
+    by about a fifth of a cell; shuffled."""
+    steps = np.arange(cells * per_side + 1) / per_side
+    lines = np.arange(cells + 1, dtype=float)
+    u_rows, v_rows = np.meshgrid(steps, lines)  # along the rows v = const
+    off_crossing = (np.arange(steps.size) % per_side) != 0
+    v_cols, u_cols = np.meshgrid(steps[off_crossing], lines)  # columns, crossings once
+    u = np.concatenate([u_rows.ravel(), u_cols.ravel()])
+    v = np.concatenate([v_rows.ravel(), v_cols.ravel()])
+    x = u + 0.2 * np.sin(0.9 * v) + 0.1 * np.sin(0.37 * v + 1.0)
+    y = v + 0.2 * np.sin(0.8 * u) + 0.1 * np.cos(0.41 * u + 2.0)
+    return np.column_stack([x, y])[np.random.default_rng(seed).permutation(u.size)]
+
+
 def main() -> None:
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -42,6 +60,7 @@ def main() -> None:
     out.mkdir(parents=True, exist_ok=True)
     np.savetxt(out / "even1e6.xy", sample(10**6, 0.1, 0.0, 5), fmt="%.10f")
     np.savetxt(out / "noisy1e5.xy", sample(10**5, 0.3, 0.25, 11), fmt="%.10f")
+    np.savetxt(out / "network1e6.xy", warped_grid(229, 10, 13), fmt="%.10f")
 
 
 if __name__ == "__main__":

@@ -115,7 +115,8 @@ def reconstruct(
     -----
     SigdtWarning
         The status says the result is not a faithful curve: ``"sculpting-stuck"`` (points
-        left inside), ``"network"`` (edges meet at junctions), ``"noisy"`` (the edges
+        left inside), ``"branching"`` (edges branch where the method does not read
+        junctions), ``"noisy"`` (the edges
         zigzag), ``"crossing"`` (edges cross) or ``"unfinished"`` (a limit stopped the
         run). The result is returned all
         the same.

@@ -66,17 +66,20 @@ class Reconstruction:
         Open paths, each an int64 array of point indices in order: for collinear input or
         two distinct points, the open curves found by ``"sig-auto"``, and from the
         graph-filter methods (``"crawl"``, ``"peel"``, ...) for open curves; with status
-        ``"network"`` paths end at junctions (a path may start and end at the same
-        junction).
+        ``"network"`` or ``"branching"`` paths end at junctions (a path may start and end
+        at the same junction).
     junctions : numpy.ndarray
         The points with three edges or more, where curves cross, end on one another or
-        share an end (status ``"network"``), sorted int64 indices; empty otherwise.
+        share an end (status ``"network"``, or ``"branching"`` from methods that do not
+        read junctions), sorted int64 indices; empty otherwise.
     polygons : list of tuple
         The loops grouped into polygons with holes, ``(shell, holes)`` indices into
         ``loops``; see the property.
     status : str
         ``"polygon"``, ``"polygons"``, ``"sculpting-stuck"``, ``"curves"`` (loops and open
-        paths, not every point on a loop), ``"network"`` (some point has 3 or more edges),
+        paths, not every point on a loop), ``"network"`` (``"sig-auto"``: curves meeting
+        at junctions, read as such), ``"branching"`` (graph filters: some point has 3 or
+        more edges, not read as a junction),
         ``"noisy"`` (``"sig-auto"``: the edges zigzag, the points are too noisy or sparse
         for a curve through them), ``"crossing"`` (``"fit-connect"``,
         ``"stretch-denoise"``: some edges cross), ``"unfinished"`` (``"fit-connect"``,

@@ -42,6 +42,7 @@ Status = Literal[
     "sculpting-stuck",
     "curves",
     "network",
+    "branching",
     "noisy",
     "crossing",
     "unfinished",

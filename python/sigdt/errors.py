@@ -35,5 +35,5 @@ class InternalError(SigdtError, RuntimeError):
 
 class SigdtWarning(UserWarning):
     """The result is not a faithful curve: the status is ``"sculpting-stuck"``,
-    ``"network"``, ``"noisy"``, ``"crossing"`` or ``"unfinished"`` (see
+    ``"branching"``, ``"noisy"``, ``"crossing"`` or ``"unfinished"`` (see
     :attr:`sigdt.Reconstruction.status`)."""

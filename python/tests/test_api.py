@@ -8,6 +8,7 @@ import copy
 import json
 import pickle
 import re
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -519,9 +520,15 @@ def test_curves_that_meet_read_as_a_network_with_its_junction() -> None:
     # A T: a bar of 17 samples with a stem of 8 ending on its middle (point 8).
     bar = [[float(i), 0.0] for i in range(-8, 9)]
     stem = [[0.1 * np.sin(i), float(i)] for i in range(1, 9)]
-    with pytest.warns(sigdt.SigdtWarning, match="junctions"):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a reading of junctions is not a warning
         rec = sigdt.reconstruct(bar + stem)
     assert rec.status == "network"
+    # A graph filter's branch is not read as a junction: it warns.
+    with pytest.warns(sigdt.SigdtWarning, match="branch"):
+        emst = sigdt.reconstruct(bar + stem, method="emst")
+    assert emst.status == "branching"
+    assert emst.junctions.tolist() == [8]
     assert rec.junctions.tolist() == [8]
     assert len(rec.edges) == 24
     assert all(path[0] == 8 or path[-1] == 8 for path in rec.paths)

@@ -59,8 +59,10 @@ Result status (printed with --verbose; also in geojson's properties):
   sculpting-stuck  sculpting found no candidate while points were still inside: the loops
                    are simple but miss those points (a warning goes to stderr)
   curves           (sig-auto, graph filters) loops and open paths, not all points on loops
-  network          (graph-filter methods) some point has 3 or more edges (a junction; a
-                   warning goes to stderr)
+  network          (sig-auto) curves that meet: junctions read as such (--verbose lists
+                   them; paths run between junctions and ends)
+  branching        (graph-filter methods) some point has 3 or more edges, which the method
+                   does not read as a junction (a warning goes to stderr)
   noisy            (sig-auto) the edges zigzag somewhere: the points are too noisy or too
                    sparse for a curve through them there (a warning goes to stderr)
   collinear        all points on one line: the open path through them in line order

@@ -230,6 +230,7 @@ fn status_from(name: &str, left_out: &[LeftOut]) -> PyResult<Status> {
         Status::SculptingStuck { left_out: inside.collect() },
         Status::Curves,
         Status::Network,
+        Status::Branching,
         Status::Noisy,
         Status::Crossing,
         Status::Unfinished,

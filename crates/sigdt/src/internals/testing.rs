@@ -39,7 +39,7 @@ pub fn check_reconstruction(points: &[Point], rec: &Reconstruction) -> Result<()
     }
     // Every vertex is on at most one chain, once, except that in a network (junctions) a
     // junction ends several paths.
-    let network = rec.status == Status::Network;
+    let network = matches!(rec.status, Status::Network | Status::Branching);
     let mut from_chains: Vec<Edge> = Vec::new();
     let mut on_chain = vec![false; n];
     let mut path_end = vec![false; n];

@@ -12,8 +12,8 @@
 //!
 //! The status is [`Polygon`](Status::Polygon) or [`Polygons`](Status::Polygons) when the
 //! loops pass through every distinct point, [`Curves`](Status::Curves) when every degree is
-//! at most 2 otherwise, and [`Network`](Status::Network) when some vertex has degree 3 or
-//! more.
+//! at most 2 otherwise, and [`Branching`](Status::Branching) when some vertex has degree 3
+//! or more (a method that reads junctions says [`Network`](Status::Network) itself).
 //!
 //! The same reading serves methods that place vertices of their own
 //! ([`Vertices::New`]): their chains index those vertices.
@@ -98,7 +98,7 @@ fn from_pairs(
     let max_degree = degree.iter().copied().max().unwrap_or(0);
     let on_loops: usize = loops.iter().map(Vec::len).sum();
     let status = if max_degree > 2 {
-        Status::Network
+        Status::Branching
     } else if paths.is_empty() && on_loops == n && !loops.is_empty() {
         if loops.len() == 1 {
             Status::Polygon
@@ -176,10 +176,10 @@ mod tests {
     }
 
     #[test]
-    fn a_junction_makes_a_network_of_paths() {
+    fn a_junction_makes_branching_paths() {
         let square = [[0, 1], [1, 2], [2, 3], [0, 3]];
         let rec = result(&SQUARE_AND_TAIL, &[square.as_slice(), &[[2, 4], [4, 5]]].concat());
-        assert_eq!(rec.status, Status::Network);
+        assert_eq!(rec.status, Status::Branching);
         assert!(rec.loops.is_empty());
         // The square closes through the junction 2; the tail hangs off it.
         assert_eq!(rec.paths, vec![vec![2, 1, 0, 3, 2], vec![2, 4, 5]]);

@@ -14,7 +14,7 @@ pub(crate) use from_edges::{from_new_vertices, from_vertex_pairs};
 pub(crate) use noisy_area::noisy_area;
 pub use noisy_area::AREA_TOLERANCE;
 pub use polygons::Polygon;
-pub(crate) use sampling_check::{check_curves, diagnose, doubling_back};
+pub(crate) use sampling_check::{check_curves, diagnose, diagnose_with, doubling_back, Spacing};
 #[doc(hidden)]
 pub use sampling_check::{measure_curve, EdgeMeasure};
 pub use sampling_check::{
@@ -45,7 +45,8 @@ pub struct Reconstruction {
     /// Open paths, each an ordered list of vertices starting at its smaller end; sorted.
     /// SIG-CONNECT2D only produces one, for collinear input or two distinct points; graph
     /// filters such as CRUST produce them for open curves, and at junctions
-    /// ([`Status::Network`]) paths end at the junction (a path may start and end there).
+    /// ([`Status::Network`], [`Status::Branching`]) paths end at the junction (a path may
+    /// start and end there).
     pub paths: Vec<Vec<usize>>,
     /// How the run ended.
     pub status: Status,
@@ -75,7 +76,8 @@ impl Reconstruction {
     }
 
     /// The junctions: vertices with three edges or more, where curves cross, end on one
-    /// another or share an end (status [`Status::Network`]), sorted. Indices as in
+    /// another or share an end (status [`Status::Network`]; [`Status::Branching`] for methods
+    /// that do not read junctions), sorted. Indices as in
     /// [`edges`](Self::edges).
     ///
     /// ```
@@ -198,9 +200,15 @@ pub enum Status {
     /// edges), but not closed loops through every distinct point: some paths are open or
     /// some points have no edge. Methods that filter a graph (CRUST and its kin) return this.
     Curves,
-    /// Some point has three or more edges (a junction). Paths run between points whose
-    /// number of edges is not two; a path may start and end at the same junction.
+    /// Curves that meet: SIG-AUTO read some points as junctions, each where three or four
+    /// curves, each sampled like a curve on its own, end or cross (see
+    /// [`Reconstruction::junctions`]). Paths run between junctions and ends; a path may
+    /// start and end at the same junction. A reading, not a failure: no warning.
     Network,
+    /// Some point has three or more edges, from a method that filters a graph (the crusts,
+    /// EMST, …) and does not read junctions: a branch may be a junction of the curves or a
+    /// stray edge. Paths run as for [`Network`](Status::Network).
+    Branching,
     /// The edges zigzag somewhere (four consecutive vertices turning by more than 60° in
     /// alternating directions, which no curve sampled with ε < 1 does, corners included):
     /// the points are too noisy, or too sparse, for a curve through them there. The loops
@@ -230,14 +238,14 @@ impl Status {
     }
 
     /// True when the status says the result is not a faithful reading of curves: sculpting
-    /// got stuck, edges meet at junctions, or they zigzag; or there is no curve at all
+    /// got stuck, edges branch where the method does not read junctions, or they zigzag; or there is no curve at all
     /// (fewer than three distinct points: an empty export fed to a pipeline must not pass
     /// unnoticed). Front ends warn then.
     pub fn is_warning(&self) -> bool {
         matches!(
             self,
             Status::SculptingStuck { .. }
-                | Status::Network
+                | Status::Branching
                 | Status::Noisy
                 | Status::Crossing
                 | Status::Unfinished
@@ -246,7 +254,7 @@ impl Status {
     }
 
     /// A short kebab-case name: `polygon`, `polygons`, `sculpting-stuck`, `curves`,
-    /// `network`, `noisy`, `crossing`, `unfinished`, `collinear`, `too-few-points`.
+    /// `network`, `branching`, `noisy`, `crossing`, `unfinished`, `collinear`, `too-few-points`.
     pub fn name(&self) -> &'static str {
         match self {
             Status::Polygon => "polygon",
@@ -254,6 +262,7 @@ impl Status {
             Status::SculptingStuck { .. } => "sculpting-stuck",
             Status::Curves => "curves",
             Status::Network => "network",
+            Status::Branching => "branching",
             Status::Noisy => "noisy",
             Status::Crossing => "crossing",
             Status::Unfinished => "unfinished",
@@ -276,7 +285,10 @@ impl std::fmt::Display for Status {
                 left_out.len()
             ),
             Status::Curves => f.write_str("loops and open paths, not all points on loops"),
-            Status::Network => f.write_str("edges meet at junctions (a point with 3+ edges)"),
+            Status::Network => f.write_str("curves meeting at junctions (read as such)"),
+            Status::Branching => f.write_str(
+                "edges branch (a point with 3+ edges) where the method does not read junctions",
+            ),
             Status::Noisy => f.write_str("the edges zigzag: the points are too noisy or sparse"),
             Status::Crossing => f.write_str("some edges cross"),
             Status::Unfinished => {

@@ -237,6 +237,25 @@ fn nearest_distance(dt: &Triangulation, v: u32) -> f64 {
     dt.incident(v).map(|h| dt.length(h)).fold(f64::INFINITY, f64::min)
 }
 
+/// Where the check reads every vertex's nearest-neighbour distance `r(v)`: measured around
+/// the vertex, or from the caller's `nearest_vertex_distances` (the same values; a lookup
+/// instead of a walk around each vertex, which on a large result read in an order unlike
+/// the vertices' misses the cache at every step).
+#[derive(Clone, Copy)]
+pub(crate) enum Spacing<'a> {
+    Measured,
+    Known(&'a [f64]),
+}
+
+impl Spacing<'_> {
+    fn at(self, dt: &Triangulation, v: u32) -> f64 {
+        match self {
+            Spacing::Measured => nearest_distance(dt, v),
+            Spacing::Known(r) => r[v as usize],
+        }
+    }
+}
+
 /// The most steps of the walk towards an edge's midpoint ([`diametral_depth`]): a bound for
 /// adversarial results; a walk cut short gives a lower bound of the depth.
 const MAX_WALK: usize = 64;
@@ -295,6 +314,16 @@ pub fn measure_curve(
     dt: &Triangulation,
     curve: &[u32],
     closed: bool,
+    visit: impl FnMut(EdgeMeasure),
+) {
+    measure_curve_with(dt, curve, closed, Spacing::Measured, visit)
+}
+
+fn measure_curve_with(
+    dt: &Triangulation,
+    curve: &[u32],
+    closed: bool,
+    spacing: Spacing,
     mut visit: impl FnMut(EdgeMeasure),
 ) {
     let n = curve.len();
@@ -303,7 +332,7 @@ pub fn measure_curve(
     }
     let closed = closed && n >= 3;
     let edges = if closed { n } else { n - 1 };
-    let r_first = nearest_distance(dt, curve[0]);
+    let r_first = spacing.at(dt, curve[0]);
     let mut r_a = r_first;
     // The vertex at position `k` along the curve, if there is one.
     let vertex = |k: isize| match closed {
@@ -312,7 +341,7 @@ pub fn measure_curve(
     };
     for k in 0..edges {
         let (a, b) = (curve[k], curve[(k + 1) % n]);
-        let r_b = if k + 1 == n { r_first } else { nearest_distance(dt, b) };
+        let r_b = if k + 1 == n { r_first } else { spacing.at(dt, b) };
         let length = distance(dt.point(a), dt.point(b));
         let (depth, deepest) = diametral_depth(dt, a, b);
         let beside = [vertex(k as isize - 1), vertex(k as isize + 2)];
@@ -331,6 +360,15 @@ pub fn measure_curve(
 /// turn in degrees: the reading turns by more than 150° at `curve[k]` between two edges
 /// that are each at least [`LONG_EDGE_RATIO`] times the spacing at their far ends.
 pub(crate) fn doubling_back(dt: &Triangulation, curve: &[u32], closed: bool) -> Vec<(usize, f64)> {
+    doubling_back_with(dt, curve, closed, Spacing::Measured)
+}
+
+fn doubling_back_with(
+    dt: &Triangulation,
+    curve: &[u32],
+    closed: bool,
+    spacing: Spacing,
+) -> Vec<(usize, f64)> {
     let n = curve.len();
     let closed = closed && n >= 3;
     let inner = if closed { 0..n } else { 1..n.saturating_sub(1) };
@@ -341,9 +379,8 @@ pub(crate) fn doubling_back(dt: &Triangulation, curve: &[u32], closed: bool) -> 
         if cos >= DOUBLING_BACK_COS {
             continue;
         }
-        let far = |w: u32| {
-            distance(dt.point(v), dt.point(w)) >= LONG_EDGE_RATIO * nearest_distance(dt, w)
-        };
+        let far =
+            |w: u32| distance(dt.point(v), dt.point(w)) >= LONG_EDGE_RATIO * spacing.at(dt, w);
         if far(a) && far(b) {
             found.push((k, cos.acos().to_degrees()));
         }
@@ -356,6 +393,14 @@ pub(crate) fn doubling_back(dt: &Triangulation, curve: &[u32], closed: bool) -> 
 pub(crate) fn check_curves<'a>(
     dt: &Triangulation,
     curves: impl IntoIterator<Item = (&'a [u32], bool)>,
+) -> Vec<Finding> {
+    check_curves_with(dt, curves, Spacing::Measured)
+}
+
+fn check_curves_with<'a>(
+    dt: &Triangulation,
+    curves: impl IntoIterator<Item = (&'a [u32], bool)>,
+    spacing: Spacing,
 ) -> Vec<Finding> {
     let mut over = Tally::new(FindingKind::PassesOverSamples);
     let mut back = Tally::new(FindingKind::DoublesBack);
@@ -371,7 +416,7 @@ pub(crate) fn check_curves<'a>(
             let n = curve.len();
             for (end, next) in [(curve[0], curve[1]), (curve[n - 1], curve[n - 2])] {
                 let last = distance(dt.point(end), dt.point(next));
-                let ratio = last / nearest_distance(dt, end);
+                let ratio = last / spacing.at(dt, end);
                 if ratio > 2.0 {
                     ends.add(ratio, input(end));
                 }
@@ -383,10 +428,10 @@ pub(crate) fn check_curves<'a>(
             small.add(-(curve.len() as f64), smallest);
         }
         has_large_curve |= curve.len() >= MIN_LOOP_POINTS;
-        for (k, degrees) in doubling_back(dt, curve, closed) {
+        for (k, degrees) in doubling_back_with(dt, curve, closed, spacing) {
             back.add(degrees, input(curve[k]));
         }
-        measure_curve(dt, curve, closed, |m| {
+        measure_curve_with(dt, curve, closed, spacing, |m| {
             let allowed = if m.by_neighbour { DEPTH_RATIO } else { STRAY_DEPTH_RATIO };
             if m.depth >= allowed {
                 over.add(m.depth, input(m.ends[0]).min(input(m.ends[1])));
@@ -408,6 +453,15 @@ pub(crate) fn check_curves<'a>(
 /// The findings of the sampling check on `rec`, a result on `dt`'s points (input indices);
 /// none for results whose vertices are not the input points, or without triangles.
 pub(crate) fn diagnose(dt: &Triangulation, rec: &super::Reconstruction) -> Vec<Finding> {
+    diagnose_with(dt, rec, Spacing::Measured)
+}
+
+/// [`diagnose`], reading `r(v)` from `spacing`.
+pub(crate) fn diagnose_with(
+    dt: &Triangulation,
+    rec: &super::Reconstruction,
+    spacing: Spacing,
+) -> Vec<Finding> {
     if rec.vertices != super::Vertices::Input || dt.shape() != crate::delaunay::Shape::Proper {
         return Vec::new();
     }
@@ -417,7 +471,8 @@ pub(crate) fn diagnose(dt: &Triangulation, rec: &super::Reconstruction) -> Vec<F
     let loops = rec.loops.iter().map(|l| (as_vertices(l), true));
     let curves: Vec<(Vec<u32>, bool)> =
         loops.chain(rec.paths.iter().map(|p| (as_vertices(p), false))).collect();
-    let mut found = check_curves(dt, curves.iter().map(|(c, closed)| (c.as_slice(), *closed)));
+    let curve_slices = curves.iter().map(|(c, closed)| (c.as_slice(), *closed));
+    let mut found = check_curves_with(dt, curve_slices, spacing);
     let outliers: Vec<u32> = rec
         .left_out
         .iter()
@@ -425,7 +480,7 @@ pub(crate) fn diagnose(dt: &Triangulation, rec: &super::Reconstruction) -> Vec<F
         .map(|l| vertex_of[l.index])
         .collect();
     if !outliers.is_empty() {
-        let on_curve = outliers_on_curve(dt, &outliers, &curves);
+        let on_curve = outliers_on_curve(dt, &outliers, &curves, spacing);
         if on_curve.count > 0 {
             found.push(on_curve.finding());
         }
@@ -440,7 +495,12 @@ pub(crate) fn diagnose(dt: &Triangulation, rec: &super::Reconstruction) -> Vec<F
 /// within half their own spacing of an edge, or nearer to a curve vertex than half that
 /// vertex's longer edge. The worst is the nearest, as a fraction of the spacing it is
 /// measured against.
-fn outliers_on_curve(dt: &Triangulation, outliers: &[u32], curves: &[(Vec<u32>, bool)]) -> Tally {
+fn outliers_on_curve(
+    dt: &Triangulation,
+    outliers: &[u32],
+    curves: &[(Vec<u32>, bool)],
+    r: Spacing,
+) -> Tally {
     // The result's neighbours of each vertex.
     let mut next = vec![[u32::MAX; 2]; dt.num_vertices()];
     for (curve, closed) in curves {
@@ -457,7 +517,7 @@ fn outliers_on_curve(dt: &Triangulation, outliers: &[u32], curves: &[(Vec<u32>, 
     }
     let mut tally = Tally::new(FindingKind::OutliersOnCurve);
     for &v in outliers {
-        let (p, spacing) = (dt.point(v), nearest_distance(dt, v));
+        let (p, spacing) = (dt.point(v), r.at(dt, v));
         let on_curve = |w: u32| next[w as usize].into_iter().filter(|&u| u != u32::MAX);
         let (mut nearest, mut within_spacing) = (f64::INFINITY, false);
         for w in dt.incident(v).map(|h| dt.other(h, v)) {

@@ -53,6 +53,47 @@ const SHADOW: f64 = MAX_SAMPLED_TURN / 2.0;
 /// No vertex, in a pair.
 const NONE: u32 = u32::MAX;
 
+/// The pair graph of one triangulation and its junctions, built the first time a step of
+/// the run asks (most runs never do: their reading breaks nowhere and their spanning trees
+/// do not branch).
+pub(super) struct Networks<'a> {
+    dt: &'a Triangulation,
+    spacing: &'a [f64],
+    built: std::cell::OnceCell<(PairGraph, Vec<u32>)>,
+}
+
+impl<'a> Networks<'a> {
+    /// `spacing`: every vertex's nearest-neighbour distance.
+    pub fn new(dt: &'a Triangulation, spacing: &'a [f64]) -> Networks<'a> {
+        Networks { dt, spacing, built: std::cell::OnceCell::new() }
+    }
+
+    /// Every vertex's nearest-neighbour distance.
+    pub fn spacing(&self) -> &'a [f64] {
+        self.spacing
+    }
+
+    /// The pair graph and its junctions (sorted).
+    pub fn get(&self) -> &(PairGraph, Vec<u32>) {
+        self.built.get_or_init(|| {
+            let pairs = PairGraph::new(self.dt, self.spacing);
+            let found = match (0..self.dt.num_vertices() as u32).any(|v| pairs.degree(v) >= 3) {
+                true => junctions(self.dt, &pairs),
+                false => Vec::new(),
+            };
+            (pairs, found)
+        })
+    }
+
+    /// Whether each vertex lies in a component of the pair graph that reads as a network
+    /// (its vertices of degree 3 or more are all junctions, and there is one), wherever the
+    /// reading breaks: the points that are curves, not outliers, whatever the reading.
+    pub fn candidates(&self) -> Vec<bool> {
+        let (pairs, found) = self.get();
+        network_vertices(pairs, self.dt.num_vertices(), found, |_| true)
+    }
+}
+
 /// The pair graph of `dt` (see the module docs) in compressed rows: the neighbours of vertex
 /// `v` are `neighbours[start[v]..start[v + 1]]`.
 pub(super) struct PairGraph {

@@ -111,8 +111,9 @@ use crate::geometry::distance;
 use crate::proximity::nearest::nearest_vertex_distances;
 use crate::proximity::sigdt::TIE_SLACK;
 use crate::result::{
-    degenerate_result, diagnose, from_vertex_pairs, inside_left_out, Finding, FindingKind, LeftOut,
-    LeftOutReason, Reconstruction, Stats, Status, Vertices, DEPTH_RATIO,
+    degenerate_result, diagnose, diagnose_with, from_vertex_pairs, inside_left_out, Finding,
+    FindingKind, LeftOut, LeftOutReason, Reconstruction, Spacing, Stats, Status, Vertices,
+    DEPTH_RATIO,
 };
 use crate::sig_connect2d::sig_connect2d_on;
 use chain_join::Chains;
@@ -120,6 +121,7 @@ use chain_join::Chains;
 pub use chain_join::JOIN_RATIO;
 use closed_component::closed_component;
 use continuation::MAX_SAMPLED_TURN;
+use junctions::Networks;
 use reading::Reading;
 use spanning_forests::Forests;
 use std::borrow::Cow;
@@ -150,28 +152,38 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     // Every vertex's nearest-neighbour distance, shared by the first round, the coarse
     // reading and the junctions.
     let spacing = (dt.shape() == Shape::Proper).then(|| nearest_vertex_distances(dt));
-    let rec = checked_reading(dt, steps, spacing.as_deref());
+    let networks = match (steps.junctions, &spacing) {
+        (true, Some(spacing)) => Some(Networks::new(dt, spacing)),
+        _ => None,
+    };
+    let rec = checked_reading(dt, steps, spacing.as_deref(), networks.as_ref());
+    if rec.status == Status::Network {
+        return rec;
+    }
     let rec = match steps.skipped_samples {
         true => with_skipped_samples(dt, rec),
         false => rec,
     };
-    match (steps.junctions, &spacing) {
-        (true, Some(spacing)) => with_junctions(dt, rec, spacing),
-        _ => rec,
+    match networks.and_then(|networks| network_reading(dt, &rec, &networks)) {
+        Some(network) => network,
+        None => rec,
     }
 }
 
 /// `rec` with the pair graph in place of its reading on the components whose branching
 /// vertices are all junctions and where the reading breaks beside one (`junctions`),
-/// checked again; `rec` itself when there is none, when a reading edge joins such a
-/// component to a point outside it, when `rec` is `noisy` or stuck, or when the sampling
-/// check finds the network broken.
-fn with_junctions(dt: &Triangulation, rec: Reconstruction, spacing: &[f64]) -> Reconstruction {
-    // A status names one way the result is off: points left inside stay that way, and
-    // where the reading zigzags like noise, pairs of edges run straight by chance.
-    let off = matches!(rec.status, Status::SculptingStuck { .. } | Status::Noisy);
-    if dt.shape() != Shape::Proper || rec.vertices != Vertices::Input || off {
-        return rec;
+/// checked again; `None` when there is none, when a reading edge joins such a component to
+/// a point outside it, when `rec` is `noisy`, when points it left inside lie outside the
+/// networks, or when the sampling check finds the network broken.
+fn network_reading(
+    dt: &Triangulation,
+    rec: &Reconstruction,
+    networks: &Networks,
+) -> Option<Reconstruction> {
+    // Where the reading zigzags like noise, pairs of edges run straight by chance.
+    if dt.shape() != Shape::Proper || rec.vertices != Vertices::Input || rec.status == Status::Noisy
+    {
+        return None;
     }
     let vertex_of = dt.vertex_of_inputs();
     let read_pairs: Vec<[u32; 2]> =
@@ -183,41 +195,52 @@ fn with_junctions(dt: &Triangulation, rec: Reconstruction, spacing: &[f64]) -> R
     // built (most curves).
     let n = dt.num_vertices();
     if !(0..n as u32).any(breaks) {
-        return rec;
+        return None;
     }
-    let pairs = junctions::PairGraph::new(dt, spacing);
-    if !(0..n as u32).any(|v| pairs.degree(v) >= 3) {
-        return rec;
-    }
-    let found = junctions::junctions(dt, &pairs);
+    let (pairs, found) = networks.get();
     if found.is_empty() {
-        return rec;
+        return None;
     }
-    let network = junctions::network_vertices(&pairs, n, &found, breaks);
+    let network = junctions::network_vertices(pairs, n, found, breaks);
     let inside = |v: u32| network[v as usize];
     if !network.contains(&true) || read_pairs.iter().any(|&[a, b]| inside(a) != inside(b)) {
-        return rec;
+        return None;
+    }
+    // Points left inside a stuck reading are read by the network, or the result stays stuck.
+    if let Status::SculptingStuck { left_out } = &rec.status {
+        if !left_out.iter().all(|&i| inside(vertex_of[i])) {
+            return None;
+        }
     }
     let mut network: Vec<[u32; 2]> = read_pairs.into_iter().filter(|&[a, _]| !inside(a)).collect();
     for v in (0..n as u32).filter(|&v| inside(v)) {
         network.extend(pairs.neighbours(v).iter().filter(|&&w| v < w).map(|&w| [v, w]));
     }
     let outliers: Vec<u32> =
-        outlier_vertices(&rec, &vertex_of).into_iter().filter(|&v| !inside(v)).collect();
+        outlier_vertices(rec, &vertex_of).into_iter().filter(|&v| !inside(v)).collect();
     let mut read = finish(dt, network, Vec::new(), &outliers, rec.stats);
-    read.diagnosis = diagnose(dt, &read);
+    if read.status == Status::Branching {
+        // Its branches are junctions read as such, not stray edges of a graph.
+        read.status = Status::Network;
+    }
+    read.diagnosis = diagnose_with(dt, &read, Spacing::Known(networks.spacing()));
     // A network the sampling check finds broken (it doubles back, or its edges reach over
     // points) is no better read than the curves were.
-    match curves_fail(&read.diagnosis) {
-        true => rec,
-        false => read,
-    }
+    (!curves_fail(&read.diagnosis)).then_some(read)
 }
 
 /// The reading, checked, with the wired-in outliers cut and the coarse reading where the
 /// check finds the curves broken (steps 11–13 of the module docs).
-fn checked_reading(dt: &Triangulation, steps: &Steps, spacing: Option<&[f64]>) -> Reconstruction {
-    let mut rec = read(dt, steps, spacing);
+fn checked_reading(
+    dt: &Triangulation,
+    steps: &Steps,
+    spacing: Option<&[f64]>,
+    networks: Option<&Networks>,
+) -> Reconstruction {
+    let mut rec = read(dt, steps, spacing, networks);
+    if rec.status == Status::Network {
+        return rec; // a whole network, checked already
+    }
     rec.diagnosis = diagnose(dt, &rec);
     if steps.wired_outliers && rec.diagnosis.iter().any(|f| f.kind == FindingKind::DoublesBack) {
         if let Some(cut) = without_wired_outliers(dt, &rec) {
@@ -227,6 +250,11 @@ fn checked_reading(dt: &Triangulation, steps: &Steps, spacing: Option<&[f64]>) -
     // The zigzag test alone (status `noisy`) does not call for another reading: it also
     // fires on exact readings of jagged polygons given by their vertices.
     let broken = curves_fail(&rec.diagnosis) || matches!(rec.status, Status::SculptingStuck { .. });
+    // Curves that meet break every reading through all points: where they read as a
+    // network, that is the reading, and no coarser one is needed.
+    if let Some(network) = networks.filter(|_| broken).and_then(|n| network_reading(dt, &rec, n)) {
+        return network;
+    }
     if !(steps.coarse && broken) {
         return rec;
     }
@@ -351,7 +379,12 @@ fn chain_pairs<'a>(chains: impl Iterator<Item = (&'a [u32], bool)>) -> Vec<[u32;
 
 /// SIG-AUTO's reading of `dt` at the points' own scale (steps 1–6 of the module docs).
 /// `spacing`: the nearest-neighbour distances of `dt`'s vertices, when it is proper.
-fn read(dt: &Triangulation, steps: &Steps, spacing: Option<&[f64]>) -> Reconstruction {
+fn read(
+    dt: &Triangulation,
+    steps: &Steps,
+    spacing: Option<&[f64]>,
+    networks: Option<&Networks>,
+) -> Reconstruction {
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
@@ -363,6 +396,9 @@ fn read(dt: &Triangulation, steps: &Steps, spacing: Option<&[f64]>) -> Reconstru
     let mut relinked: Option<(Vec<[u32; 2]>, Stats)> = None;
     // The isolated pieces left out in the first round (`isolated`), vertices of `dt`.
     let mut isolated: Vec<Vec<u32>> = Vec::new();
+    // The vertices of `dt` on networks' curves (`Networks::candidates`), asked for once a
+    // spanning tree branches: no branch through them is an outlier.
+    let mut on_networks: Option<Vec<bool>> = None;
     for round in 0..MAX_ROUNDS {
         let subset;
         let sub = if round == 0 {
@@ -395,8 +431,28 @@ fn read(dt: &Triangulation, steps: &Steps, spacing: Option<&[f64]>) -> Reconstru
                 } else {
                     let forests = Forests::new(sub, &spacing);
                     let far_off = round + 1 < MAX_ROUNDS && steps.branch_outliers;
-                    let found =
-                        if far_off { branches_far_off(sub, &forests, steps) } else { Vec::new() };
+                    let branched = forests.components().iter().any(|&(_, branched)| branched);
+                    if let (true, Some(networks)) = (far_off && branched, networks) {
+                        let on = on_networks.get_or_insert_with(|| networks.candidates());
+                        if round == 0 && on.iter().all(|&on| on) {
+                            // Every point is on a network's curves: that is the reading.
+                            let stats = Stats {
+                                graph_edges: forests.graph.len(),
+                                leaf_edges_added: forests.leaf_edges_added,
+                                ..Stats::default()
+                            };
+                            match whole_network(dt, networks, stats) {
+                                Some(network) => return network,
+                                None => on_networks = None,
+                            }
+                        }
+                    }
+                    let curve =
+                        |v: u32| on_networks.as_ref().is_some_and(|on| on[whole(v) as usize]);
+                    let found = match far_off {
+                        true => branches_far_off(sub, &forests, curve, steps),
+                        false => Vec::new(),
+                    };
                     (found, Some(forests))
                 };
                 match forests {
@@ -426,7 +482,13 @@ fn read(dt: &Triangulation, steps: &Steps, spacing: Option<&[f64]>) -> Reconstru
         };
         let mut reading = Reading::new(sub, &read.pairs);
         let cut: Vec<u32> = match steps.detours {
-            true => outliers::detour_outliers(&mut reading, steps).into_iter().map(whole).collect(),
+            true => {
+                let curve = |v: u32| on_networks.as_ref().is_some_and(|on| on[whole(v) as usize]);
+                outliers::detour_outliers(&mut reading, curve, steps)
+                    .into_iter()
+                    .map(whole)
+                    .collect()
+            }
             false => Vec::new(),
         };
         if !cut.is_empty() && round + 1 < MAX_ROUNDS {
@@ -462,6 +524,21 @@ fn read(dt: &Triangulation, steps: &Steps, spacing: Option<&[f64]>) -> Reconstru
     unreachable!("the last round always reads its points")
 }
 
+/// The pair graph as the reading of every point (when they are all on networks' curves),
+/// unless the sampling check finds it broken.
+fn whole_network(dt: &Triangulation, networks: &Networks, stats: Stats) -> Option<Reconstruction> {
+    let (pairs, _) = networks.get();
+    let n = dt.num_vertices() as u32;
+    let edges = (0..n)
+        .flat_map(|v| pairs.neighbours(v).iter().filter(move |&&w| v < w).map(move |&w| [v, w]));
+    let mut rec = finish(dt, edges.collect(), Vec::new(), &[], stats);
+    if rec.status == Status::Branching {
+        rec.status = Status::Network;
+    }
+    rec.diagnosis = diagnose_with(dt, &rec, Spacing::Known(networks.spacing()));
+    (!curves_fail(&rec.diagnosis)).then_some(rec)
+}
+
 /// What reading the components of one round gave, in the vertex numbers of its
 /// triangulation.
 struct Read {
@@ -472,13 +549,18 @@ struct Read {
 }
 
 /// The branches of every component's SIGDT2 spanning tree that are outliers.
-fn branches_far_off(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Vec<u32> {
+fn branches_far_off(
+    dt: &Triangulation,
+    forests: &Forests,
+    curve: impl Fn(u32) -> bool + Copy,
+    steps: &Steps,
+) -> Vec<u32> {
     let tree = &forests.sigdt2;
     let mut found = Vec::new();
     for (vertices, branched) in forests.components() {
         if *branched {
             let neighbours = |v: u32| tree.neighbours(v).to_vec();
-            found.extend(outliers::branch_outliers(dt, vertices, neighbours, steps));
+            found.extend(outliers::branch_outliers(dt, vertices, neighbours, curve, steps));
         } else {
             found.extend(outliers::chain_end_outliers(dt, &tree.walk(vertices), steps));
         }
@@ -840,6 +922,51 @@ mod tests {
         );
         assert_eq!(sorted_edges(&rec), truth);
         assert_eq!(rec.status, Status::Polygon);
+    }
+
+    /// The lines of a `cells` x `cells` grid, sampled 8 times a cell side with every
+    /// crossing a sample of both lines, bent into smooth curves; and its edges.
+    fn warped_grid(cells: usize) -> (Vec<Point>, Vec<(usize, usize)>) {
+        let per_side = 8;
+        let steps = cells * per_side;
+        let warp = |u: f64, v: f64| [u + 0.2 * (0.9 * v).sin(), v + 0.2 * (0.8 * u).sin()];
+        let mut index = std::collections::HashMap::new();
+        let mut points = Vec::new();
+        let mut truth = Vec::new();
+        let mut at = |k: usize, line: usize, along_rows: bool| {
+            let key = if along_rows { (k, line * per_side) } else { (line * per_side, k) };
+            *index.entry(key).or_insert_with(|| {
+                points.push(warp(key.0 as f64 / per_side as f64, key.1 as f64 / per_side as f64));
+                points.len() - 1
+            })
+        };
+        for line in 0..=cells {
+            for along_rows in [true, false] {
+                for k in 0..steps {
+                    let (a, b) = (at(k, line, along_rows), at(k + 1, line, along_rows));
+                    truth.push((a.min(b), a.max(b)));
+                }
+            }
+        }
+        truth.sort_unstable();
+        (points, truth)
+    }
+
+    #[test]
+    fn a_grid_of_crossing_curves_is_one_network() {
+        // Every point lies on curves that cross or end on one another: the branches of its
+        // spanning tree are curves, not outliers, and the pair graph is the reading. (It was
+        // read as polygons, stuck, with whole stretches of the lines left out as outliers,
+        // over 16 rounds of outlier removal.)
+        for cells in [3, 8] {
+            let (points, truth) = warped_grid(cells);
+            let rec = run(&points);
+            assert_eq!(rec.status, Status::Network, "{cells} cells");
+            assert_eq!(sorted_edges(&rec), truth);
+            // Crossings inside, and a line ending on the frame at every other crossing.
+            assert_eq!(rec.junctions().len(), (cells - 1) * (cells - 1) + 4 * (cells - 1));
+            assert!(rec.diagnosis.is_empty() && !rec.warns());
+        }
     }
 
     #[test]

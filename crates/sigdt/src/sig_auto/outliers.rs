@@ -50,10 +50,14 @@ use std::collections::{HashMap, HashSet};
 /// branch is left out only if it also lies farther than twice the spacing from every other
 /// point (an edge to any of them would break `u < 2`): the curve it was read against is a
 /// piece of the tree, and another piece (a parallel strand of a noisy band) may run nearer.
+///
+/// A branch with a vertex that `curve` says is on a curve for sure (a network's, read from
+/// the junctions) is kept.
 pub(crate) fn branch_outliers(
     dt: &Triangulation,
     vertices: &[u32],
     neighbours: impl Fn(u32) -> Vec<u32>,
+    curve: impl Fn(u32) -> bool,
     steps: &Steps,
 ) -> Vec<u32> {
     // `tree_of[v]` names the (sub)tree `v` is being read in; a subtree's members are the
@@ -72,7 +76,7 @@ pub(crate) fn branch_outliers(
             ws.retain(|w| tree_of.get(w) == Some(&id));
             ws
         };
-        let (far, kept) = far_branches(dt, &tree, &within, nested, steps);
+        let (far, kept) = far_branches(dt, &tree, &within, &curve, nested, steps);
         outliers.extend(far);
         trees.extend(kept.into_iter().filter(|b| b.len() >= OWN_CURVE_POINTS));
     }
@@ -87,6 +91,7 @@ fn far_branches(
     dt: &Triangulation,
     vertices: &[u32],
     neighbours: &impl Fn(u32) -> Vec<u32>,
+    curve: &impl Fn(u32) -> bool,
     nested: bool,
     steps: &Steps,
 ) -> (Vec<u32>, Vec<Vec<u32>>) {
@@ -119,7 +124,7 @@ fn far_branches(
         }
         let Some(i) = anchor else { continue };
         let branch = Branch { members: &members, inner, path: &path, at: i };
-        if branch.is_far_off(dt, nested, steps) {
+        if !members.iter().any(|&v| curve(v)) && branch.is_far_off(dt, nested, steps) {
             outliers.extend(members);
         } else {
             kept.push(members);
@@ -297,8 +302,13 @@ fn main_path(
 }
 
 /// Cuts every detour of the reading (rule 2 of the module docs), farthest first, and
-/// returns the vertices cut out.
-pub(crate) fn detour_outliers(reading: &mut Reading<'_>, steps: &Steps) -> Vec<u32> {
+/// returns the vertices cut out. A run through a vertex that `curve` says is on a curve
+/// for sure (a network's) is no detour.
+pub(crate) fn detour_outliers(
+    reading: &mut Reading<'_>,
+    curve: impl Fn(u32) -> bool,
+    steps: &Steps,
+) -> Vec<u32> {
     let dt = reading.dt;
     let mut outliers = Vec::new();
     loop {
@@ -327,8 +337,11 @@ pub(crate) fn detour_outliers(reading: &mut Reading<'_>, steps: &Steps) -> Vec<u
                 if squared(b) >= reach || reading.degree(b) != 2 || reading.joined(a, b) {
                     continue;
                 }
-                if let Some((margin, _)) = detour(reading, steps, a, first, b) {
-                    found.push((margin, a, first, b));
+                match detour(reading, steps, a, first, b) {
+                    Some((margin, run)) if !run.iter().any(|&v| curve(v)) => {
+                        found.push((margin, a, first, b))
+                    }
+                    _ => {}
                 }
             }
         }
@@ -336,12 +349,17 @@ pub(crate) fn detour_outliers(reading: &mut Reading<'_>, steps: &Steps) -> Vec<u
             break;
         }
         found.sort_by(|x, y| y.0.total_cmp(&x.0).then((x.1, x.2, x.3).cmp(&(y.1, y.2, y.3))));
+        let before = outliers.len();
         for (_, a, first, b) in found {
             let still = reading.joined(a, first) && reading.degree(b) == 2;
             let Some((_, run)) = still.then(|| detour(reading, steps, a, first, b)).flatten()
             else {
                 continue;
             };
+            if run.iter().any(|&v| curve(v)) {
+                continue;
+            }
+
             let last = run[run.len() - 1];
             reading.relink(a, first, b);
             reading.relink(b, last, a);
@@ -349,6 +367,9 @@ pub(crate) fn detour_outliers(reading: &mut Reading<'_>, steps: &Steps) -> Vec<u
                 reading.detach(o);
             }
             outliers.extend(run);
+        }
+        if outliers.len() == before {
+            break; // every detour left was spoilt by an earlier cut into a curve's
         }
     }
     outliers.sort_unstable();

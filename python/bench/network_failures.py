@@ -1,0 +1,220 @@
+"""Why SIG-AUTO misses each labelled network it misses: the sampling conditions the case
+breaks, with a picture of each miss (issue 33).
+
+Run from the repository root after ``make build`` (``make report`` runs it)::
+
+    .venv/bin/python python/bench/network_failures.py data/non-manifold data/networks \\
+        --out docs/report/networks/failures.md
+
+SIG-AUTO reads a junction from the straightest pairs of SIGDT edges (``docs/sig-auto.md``
+step 15). The conditions below are what that reading assumes of the samples, checked on the
+ground truth, so a broken one names what the points lack, not what the code did:
+
+- ``not-delaunay``: a ground-truth edge is not a Delaunay edge (no method that keeps
+  Delaunay edges can be exact);
+- ``not-sigdt``: a ground-truth edge is not a SIGDT edge (SIG ∩ DT, whose edges the pairs
+  are taken from);
+- ``near-curves``: a sample's nearest other point is not its neighbour along its curve (two
+  curves, or two stretches of one, pass closer than their spacing; a curve sampled with
+  ε < 1 never does this);
+- ``sharp-turn``: a sample with two edges turns by more than 60° (more than a curve sampled
+  with ε < 1 turns);
+- ``narrow-arms``: two edges at a junction leave it less than 30° apart (the longer hides
+  behind the shorter);
+- ``uneven-junction``: a junction's longest edge is twice its shortest or more (sampled
+  unlike one curve);
+- ``near-junctions``: two junctions within two edges of each other;
+- ``short-branch``: a branch runs through fewer than 3 samples before it ends or branches.
+
+A miss that breaks none of them is SIG-AUTO's own (``reading``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+from collections import Counter, defaultdict
+from pathlib import Path
+
+import numpy as np
+import sigdt
+from network_scores import cli_binary, degrees, edges_of
+
+MAX_TURN = np.radians(60.0)
+SHADOW = MAX_TURN / 2
+MIN_BRANCH = 3
+CONDITIONS = [
+    "not-delaunay",
+    "not-sigdt",
+    "near-curves",
+    "sharp-turn",
+    "narrow-arms",
+    "uneven-junction",
+    "near-junctions",
+    "short-branch",
+]
+
+
+def broken_conditions(points: np.ndarray, truth: set[tuple[int, int]]) -> list[str]:
+    """The conditions of the module docs that the ground truth `truth` breaks."""
+    found = []
+    dt = {tuple(e) for e in sigdt.proximity_graph(points, "dt").tolist()}
+    if truth - dt:
+        found.append("not-delaunay")
+    if truth - {tuple(e) for e in sigdt.proximity_graph(points, "sigdt").tolist()}:
+        found.append("not-sigdt")
+    around: dict[int, list[int]] = defaultdict(list)
+    for a, b in sorted(truth):
+        around[a].append(b)
+        around[b].append(a)
+    nearest = {}
+    for a, b in dt:
+        d = float(np.hypot(*(points[a] - points[b])))
+        for v, w in ((a, b), (b, a)):
+            if v not in nearest or (d, w) < nearest[v]:
+                nearest[v] = (d, w)
+    if any(w not in around[v] and d < min_edge(points, v, around) for v, (d, w) in nearest.items()):
+        found.append("near-curves")
+
+    def direction(v: int, w: int) -> float:
+        dx, dy = points[w] - points[v]
+        return float(np.arctan2(dy, dx))
+
+    def apart(a: float, b: float) -> float:
+        return abs((a - b + np.pi) % (2 * np.pi) - np.pi)
+
+    degree = {v: len(ws) for v, ws in around.items()}
+    junctions = [v for v, d in degree.items() if d >= 3]
+    bends = (v for v, ws in around.items() if len(ws) == 2)
+    if any(
+        np.pi - apart(direction(v, ws[0]), direction(v, ws[1])) > MAX_TURN
+        for v, ws in ((v, around[v]) for v in bends)
+    ):
+        found.append("sharp-turn")
+    if any(
+        apart(direction(j, a), direction(j, b)) < SHADOW
+        for j in junctions
+        for k, a in enumerate(around[j])
+        for b in around[j][k + 1 :]
+    ):
+        found.append("narrow-arms")
+    lengths = {j: [float(np.hypot(*(points[w] - points[j]))) for w in around[j]] for j in junctions}
+    if any(max(ls) >= 2 * min(ls) for ls in lengths.values()):
+        found.append("uneven-junction")
+    within_two = {j: {w for v in around[j] for w in [v, *around[v]]} for j in junctions}
+    if any(k != j and k in within_two[j] for j in junctions for k in junctions):
+        found.append("near-junctions")
+    if any(not branch_reaches(around, j, w) for j in junctions for w in around[j]):
+        found.append("short-branch")
+    return found
+
+
+def min_edge(points: np.ndarray, v: int, around: dict[int, list[int]]) -> float:
+    return min((float(np.hypot(*(points[w] - points[v]))) for w in around[v]), default=np.inf)
+
+
+def branch_reaches(around: dict[int, list[int]], j: int, w: int) -> bool:
+    """Whether the branch leaving `j` towards `w` runs through MIN_BRANCH samples before it
+    ends or branches (SIG-AUTO's test, on the ground truth)."""
+    previous, current = j, w
+    for _ in range(1, MIN_BRANCH):
+        if len(around[current]) != 2:
+            return False
+        a, b = around[current]
+        previous, current = current, b if a == previous else a
+    return True
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("folders", nargs="+", type=Path)
+    parser.add_argument("--out", type=Path, required=True)
+    args = parser.parse_args()
+    cli = cli_binary()
+    pictures = args.out.parent / "failures"
+    pictures.mkdir(parents=True, exist_ok=True)
+    for old in pictures.glob("*.svg"):
+        old.unlink()
+    lines = [
+        "# Networks: why SIG-AUTO misses",
+        "",
+        "Written by `python/bench/network_failures.py` (`make report`). For every case",
+        "SIG-AUTO does not reconstruct exactly: its status, the edges it misses and adds, and",
+        "the sampling conditions the case breaks (checked on the ground truth; the script's",
+        "docstring defines them). `reading`: none broken, the miss is SIG-AUTO's own.",
+        "Pictures: points, SIG-AUTO's result, missing edges dashed, extra edges thick.",
+        "",
+    ]
+    for folder in args.folders:
+        cases = sorted(folder.glob("*.xy"))
+        if not cases or any(not xy.with_suffix(".gt").is_file() for xy in cases):
+            sys.exit(f"network_failures: {folder}: every case is NAME.xy with NAME.gt")
+        rows, tally = [], Counter()
+        for xy in cases:
+            truth = edges_of(xy.with_suffix(".gt").read_text())
+            run = subprocess.run(
+                [
+                    str(cli),
+                    "reconstruct",
+                    str(xy),
+                    "--format",
+                    "edges",
+                    "--method",
+                    "sig-auto",
+                    "-v",
+                ],
+                capture_output=True,
+                text=True,
+                check=True,
+            )
+            found = edges_of(run.stdout)
+            if found == truth:
+                continue
+            status = next(
+                line.split()[1] for line in run.stderr.splitlines() if line.startswith("status:")
+            )
+            points = np.loadtxt(xy, ndmin=2)
+            broken = broken_conditions(points, truth) or ["reading"]
+            tally.update(broken)
+            true_degree, found_degree = degrees(truth), degrees(found)
+            missed = sum(found_degree[v] != d for v, d in true_degree.items() if d >= 3)
+            picture = pictures / f"{xy.stem}.svg"
+            subprocess.run(
+                [
+                    str(cli),
+                    "render",
+                    str(xy),
+                    "--gt",
+                    str(xy.with_suffix(".gt")),
+                    "--layers",
+                    "points,result,gt",
+                    "-o",
+                    str(picture),
+                ],
+                check=True,
+                capture_output=True,
+            )
+            rows.append(
+                f"| [{xy.stem}](failures/{picture.name}) | `{status}` | {len(truth - found)} "
+                f"| {len(found - truth)} | {missed} | {', '.join(broken)} |"
+            )
+        lines += [
+            f"## `{folder.as_posix()}`: {len(rows)} of {len(cases)} missed",
+            "",
+            f"{len(rows) - tally['reading']} of the misses break a sampling condition. "
+            "Cases breaking each (a case may break several): "
+            + ", ".join(f"{c} {tally[c]}" for c in [*CONDITIONS, "reading"] if tally[c])
+            + ".",
+            "",
+            "| case | status | missing | extra | junctions missed | conditions broken |",
+            "| :-- | :-- | --: | --: | --: | :-- |",
+            *rows,
+            "",
+        ]
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    args.out.write_text("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()

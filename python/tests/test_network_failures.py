@@ -1,0 +1,53 @@
+"""The sampling conditions ``python/bench/network_failures.py`` checks on a ground truth
+(issue 33's reasons per failure): each is found where it is broken and only there."""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+
+import numpy as np
+
+BENCH = Path(__file__).resolve().parents[2] / "python" / "bench"
+
+
+def load(name: str):
+    sys.path.insert(0, str(BENCH))  # the script imports its sibling network_scores
+    try:
+        spec = importlib.util.spec_from_file_location(name, BENCH / f"{name}.py")
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        return module
+    finally:
+        sys.path.remove(str(BENCH))
+
+
+failures = load("network_failures")
+
+
+def tee(stem_angle: float = 90.0, stem: int = 8, wiggle: float = 0.0):
+    """A bar of 17 unit-spaced samples, a stem of `stem` samples ending on its middle (8)
+    at `stem_angle` degrees from the bar; the ground truth joins consecutive samples."""
+    points = [[float(i), wiggle * (i % 2)] for i in range(-8, 9)]
+    a = np.radians(stem_angle)
+    points += [[i * np.cos(a), i * np.sin(a)] for i in range(1, stem + 1)]
+    truth = {(i, i + 1) for i in range(16)} | {(8, 17)} | {(k, k + 1) for k in range(17, 16 + stem)}
+    return np.array(points), truth
+
+
+def test_a_well_sampled_tee_breaks_nothing():
+    assert failures.broken_conditions(*tee()) == []
+
+
+def test_a_stem_of_two_samples_is_a_short_branch():
+    assert failures.broken_conditions(*tee(stem=2)) == ["short-branch"]
+
+
+def test_a_stem_close_to_the_bar_hides_behind_it_and_runs_near_it():
+    broken = failures.broken_conditions(*tee(stem_angle=20.0))
+    assert "narrow-arms" in broken and "near-curves" in broken
+
+
+def test_a_zigzag_bar_turns_sharply():
+    assert "sharp-turn" in failures.broken_conditions(*tee(wiggle=1.2))
