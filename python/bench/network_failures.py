@@ -24,7 +24,9 @@ ground truth, so a broken one names what the points lack, not what the code did:
 - ``uneven-junction``: a junction's longest edge is twice its shortest or more (sampled
   unlike one curve);
 - ``near-junctions``: two junctions within two edges of each other;
-- ``short-branch``: a branch runs through fewer than 3 samples before it ends or branches.
+- ``short-branch``: a branch runs through fewer than 3 samples before it ends or branches
+  (at a crossing, 2 that continue a branch of 3 or more straight through it are enough: a
+  curve that stops just past the one it crosses).
 
 A miss that breaks none of them is SIG-AUTO's own (``reading``).
 """
@@ -33,13 +35,12 @@ from __future__ import annotations
 
 import argparse
 import subprocess
-import sys
 from collections import Counter, defaultdict
 from pathlib import Path
 
 import numpy as np
 import sigdt
-from network_scores import cli_binary, degrees, edges_of
+from network_scores import cli_binary, degrees, edges_of, labelled_cases
 
 MAX_TURN = np.radians(60.0)
 SHADOW = MAX_TURN / 2
@@ -105,7 +106,24 @@ def broken_conditions(points: np.ndarray, truth: set[tuple[int, int]]) -> list[s
     within_two = {j: {w for v in around[j] for w in [v, *around[v]]} for j in junctions}
     if any(k != j and k in within_two[j] for j in junctions for k in junctions):
         found.append("near-junctions")
-    if any(not branch_reaches(around, j, w) for j in junctions for w in around[j]):
+
+    def overshoot(j: int, w: int) -> bool:
+        # A curve stopping just past a crossing: two samples, continued straight through it.
+        others = [x for x in around[j] if x != w]
+        beyond = max(others, key=lambda x: (apart(direction(j, w), direction(j, x)), -x))
+        straight = np.pi - apart(direction(j, w), direction(j, beyond)) <= MAX_TURN
+        return (
+            len(around[j]) == 4
+            and branch_reaches(around, j, w, MIN_BRANCH - 1)
+            and straight
+            and branch_reaches(around, j, beyond, MIN_BRANCH)
+        )
+
+    if any(
+        not branch_reaches(around, j, w, MIN_BRANCH) and not overshoot(j, w)
+        for j in junctions
+        for w in around[j]
+    ):
         found.append("short-branch")
     return found
 
@@ -114,11 +132,11 @@ def min_edge(points: np.ndarray, v: int, around: dict[int, list[int]]) -> float:
     return min((float(np.hypot(*(points[w] - points[v]))) for w in around[v]), default=np.inf)
 
 
-def branch_reaches(around: dict[int, list[int]], j: int, w: int) -> bool:
-    """Whether the branch leaving `j` towards `w` runs through MIN_BRANCH samples before it
-    ends or branches (SIG-AUTO's test, on the ground truth)."""
+def branch_reaches(around: dict[int, list[int]], j: int, w: int, k: int) -> bool:
+    """Whether the branch leaving `j` towards `w` runs through `k` samples before it ends or
+    branches (SIG-AUTO's test, on the ground truth)."""
     previous, current = j, w
-    for _ in range(1, MIN_BRANCH):
+    for _ in range(1, k):
         if len(around[current]) != 2:
             return False
         a, b = around[current]
@@ -147,9 +165,7 @@ def main() -> None:
         "",
     ]
     for folder in args.folders:
-        cases = sorted(folder.glob("*.xy"))
-        if not cases or any(not xy.with_suffix(".gt").is_file() for xy in cases):
-            sys.exit(f"network_failures: {folder}: every case is NAME.xy with NAME.gt")
+        cases = labelled_cases(folder, "network_failures")
         rows, tally = [], Counter()
         for xy in cases:
             truth = edges_of(xy.with_suffix(".gt").read_text())
@@ -202,8 +218,8 @@ def main() -> None:
         lines += [
             f"## `{folder.as_posix()}`: {len(rows)} of {len(cases)} missed",
             "",
-            f"{len(rows) - tally['reading']} of the misses break a sampling condition. "
-            "Cases breaking each (a case may break several): "
+            f"Misses that break a sampling condition: {len(rows) - tally['reading']} of "
+            f"{len(rows)}. Cases breaking each (a case may break several): "
             + ", ".join(f"{c} {tally[c]}" for c in [*CONDITIONS, "reading"] if tally[c])
             + ".",
             "",

@@ -38,6 +38,16 @@ def cli_binary() -> Path:
     return binary
 
 
+def labelled_cases(folder: Path, script: str) -> list[Path]:
+    """The cases NAME.xy of `folder`, each with its NAME.gt; exits naming what is wrong."""
+    cases = sorted(folder.glob("*.xy"))
+    unlabelled = [xy for xy in cases if not xy.with_suffix(".gt").is_file()]
+    if not cases or unlabelled:
+        what = f"{unlabelled[0].name} has no .gt" if unlabelled else "no NAME.xy files"
+        sys.exit(f"{script}: {folder}: {what} (each case is NAME.xy with NAME.gt)")
+    return cases
+
+
 def edges_of(text: str) -> set[tuple[int, int]]:
     pairs = (line.split() for line in text.splitlines() if line.strip() and line[0] != "#")
     return {(min(int(a), int(b)), max(int(a), int(b))) for a, b in pairs}
@@ -97,11 +107,7 @@ def main() -> None:
         "",
     ]
     for folder in args.folders:
-        cases = sorted(folder.glob("*.xy"))
-        unlabelled = [xy for xy in cases if not xy.with_suffix(".gt").is_file()]
-        if not cases or unlabelled:
-            what = f"{unlabelled[0].name} has no .gt" if unlabelled else "no NAME.xy files"
-            sys.exit(f"network_scores: {folder}: {what} (each case is NAME.xy with NAME.gt)")
+        labelled_cases(folder, "network_scores")
         lines += [
             f"## `{folder.as_posix()}`",
             "",

@@ -51,3 +51,19 @@ def test_a_stem_close_to_the_bar_hides_behind_it_and_runs_near_it():
 
 def test_a_zigzag_bar_turns_sharply():
     assert "sharp-turn" in failures.broken_conditions(*tee(wiggle=1.2))
+
+
+def crossing(past: int):
+    """A bar of 17 unit-spaced samples crossed at its middle (8) by a stroke from 8 samples
+    below to `past` samples above it; the ground truth joins consecutive samples."""
+    points = [[float(i), 0.0] for i in range(-8, 9)]
+    points += [[0.0, float(i)] for i in range(-8, past + 1) if i != 0]
+    truth = {(i, i + 1) for i in range(16)}
+    stroke = [17 + k for k in range(8)] + [8] + [25 + k for k in range(past)]
+    truth |= {(min(a, b), max(a, b)) for a, b in zip(stroke, stroke[1:])}
+    return np.array(points), truth
+
+
+def test_a_stroke_stopping_two_samples_past_a_crossing_still_crosses():
+    assert failures.broken_conditions(*crossing(past=2)) == []
+    assert failures.broken_conditions(*crossing(past=1)) == ["short-branch"]

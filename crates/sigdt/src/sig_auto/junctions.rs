@@ -18,7 +18,10 @@
 //!    samples of two curves that pass near each other and swapped neighbours (noise does
 //!    this), not curves that meet;
 //! 3. every branch at it is a curve of its own: it runs through at least [`MIN_BRANCH`]
-//!    samples before it ends or branches (a few outliers in a row beside a curve do not).
+//!    samples before it ends or branches (a few outliers in a row beside a curve do not);
+//!    at a crossing (degree 4), a branch of one sample fewer also counts when it continues
+//!    such a branch straight through the crossing, turning by at most
+//!    [`MAX_SAMPLED_TURN`]: a curve that stops just past the curve it crosses.
 //!
 //! A component of the pair graph whose vertices of degree 3 or more are all junctions
 //! replaces SIG-AUTO's reading on its points when that reading breaks within two edges of
@@ -26,6 +29,9 @@
 //! [`MAX_SAMPLED_TURN`]) and no reading edge joins the component to a point outside it.
 //! Where the reading passes smoothly, it reads the points as the paper's sampling condition
 //! says they are, and is kept; so it is where the sampling check finds the network broken.
+//! The points of the components whose branching vertices are all junctions, wherever the
+//! reading breaks ([`Networks::candidates`]), are curves: SIG-AUTO's outlier rules leave
+//! them in.
 //!
 //! # Complexity
 //! O(n + Σ deg²) time over the SIGDT degrees (O(n) on curve samples, whose SIGDT degrees
@@ -261,11 +267,45 @@ pub(super) fn junctions(dt: &Triangulation, pairs: &PairGraph) -> Vec<u32> {
         let (short, long) = lengths.fold((f64::INFINITY, 0.0f64), |(s, l), x| (s.min(x), l.max(x)));
         long < 4.0 * short
     };
+    // A curve may stop just past a crossing: its end there is a branch of two samples that
+    // continues, straight through the crossing, a branch of its own length.
+    let overshoot = |j: u32, w: u32| {
+        let around = pairs.neighbours(j);
+        let beyond = straight_beyond(dt.point(j), around, w, |u| dt.point(u));
+        around.len() == 4
+            && pairs.branch_reaches(j, w, MIN_BRANCH - 1)
+            && beyond.is_some_and(|x| pairs.branch_reaches(j, x, MIN_BRANCH))
+    };
     (0..dt.num_vertices() as u32)
         .filter(|&j| branching(j) && uniform(j))
         .filter(|&j| pairs.within_two(j).all(|v| v == j || !branching(v)))
-        .filter(|&j| pairs.neighbours(j).iter().all(|&w| pairs.branch_reaches(j, w, MIN_BRANCH)))
+        .filter(|&j| {
+            let long = |w: u32| pairs.branch_reaches(j, w, MIN_BRANCH);
+            pairs.neighbours(j).iter().all(|&w| long(w) || overshoot(j, w))
+        })
         .collect()
+}
+
+/// The vertex of `around` (the neighbours of `p`) that continues the edge from `w` through
+/// `p` straightest, if it turns by at most [`MAX_SAMPLED_TURN`]; ties by index.
+fn straight_beyond(p: Point, around: &[u32], w: u32, point: impl Fn(u32) -> Point) -> Option<u32> {
+    let direction = |u: u32| {
+        let q = point(u);
+        let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
+        let length = (dx * dx + dy * dy).sqrt();
+        [dx / length, dy / length]
+    };
+    let from = direction(w);
+    let cos = |u: u32| {
+        let d = direction(u);
+        from[0] * d[0] + from[1] * d[1]
+    };
+    let best = around
+        .iter()
+        .copied()
+        .filter(|&u| u != w)
+        .min_by(|&a, &b| cos(a).total_cmp(&cos(b)).then(a.cmp(&b)))?;
+    (cos(best) <= -MAX_SAMPLED_TURN.cos()).then_some(best)
 }
 
 /// Whether each vertex lies in a component of the pair graph whose vertices of degree 3 or
@@ -369,6 +409,30 @@ mod tests {
             assert!(others.clone().all(|i| degree(i) == 2), "turn {turn}");
             assert_eq!(junctions(&dt, &pairs), vec![vertex_of[8]]);
         }
+    }
+
+    #[test]
+    fn a_stroke_that_stops_just_past_a_crossing_still_crosses() {
+        // One stroke of the crossing ends two samples past it: a branch one sample short,
+        // continued straight through the crossing by six. The same two samples as the stem
+        // of a T are no branch of their own (a pair of outliers beside a curve).
+        let mut crossing = cross(6, 1.2);
+        let (sin, cos) = 1.2f64.sin_cos();
+        crossing.retain(|p| {
+            let along = -(p[0] * cos + p[1] * sin);
+            let across = p[1] * cos - p[0] * sin;
+            !(across.abs() < 1e-9 && along > 2.5)
+        });
+        let (dt, pairs) = graph(&crossing);
+        let centre = dt.vertex_of_inputs()[0];
+        assert_eq!(pairs.degree(centre), 4);
+        assert_eq!(junctions(&dt, &pairs), vec![centre]);
+
+        let mut tee: Vec<Point> = (-8..=8).map(|i| [i as f64, 0.0]).collect();
+        tee.extend((1..=2).map(|i| [0.0, i as f64]));
+        let (dt, pairs) = graph(&tee);
+        assert_eq!(pairs.degree(dt.vertex_of_inputs()[8]), 3);
+        assert!(junctions(&dt, &pairs).is_empty());
     }
 
     #[test]

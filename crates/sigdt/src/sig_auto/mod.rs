@@ -59,7 +59,10 @@
 //!    or more such pairs reach, with evenly spaced branches of at least three samples and
 //!    no other such vertex within two edges, is a junction, and where the reading breaks
 //!    near one, the pairs' graph replaces it on that piece: status `network`, paths between
-//!    junctions and ends.
+//!    junctions and ends. A broken reading meets the networks before the coarse reading
+//!    (step 13). Once a spanning tree branches, the points on such networks are known
+//!    before the reading: no branch or detour through them is an outlier (steps 1 and 4),
+//!    and when they are all the points, the pairs' graph is the reading.
 //!
 //! Points left out are listed in the result with the reason `outlier`; a result whose
 //! loops pass through every point that is not left out is a `polygon` or `polygons`.
@@ -963,7 +966,7 @@ mod tests {
             let rec = run(&points);
             assert_eq!(rec.status, Status::Network, "{cells} cells");
             assert_eq!(sorted_edges(&rec), truth);
-            // Crossings inside, and a line ending on the frame at every other crossing.
+            // A crossing inside, a T where each inner line ends on the frame.
             assert_eq!(rec.junctions().len(), (cells - 1) * (cells - 1) + 4 * (cells - 1));
             assert!(rec.diagnosis.is_empty() && !rec.warns());
         }
