@@ -230,16 +230,18 @@ class Reconstruction:
             )
         return self._polygons
 
-    def to_shapely(self) -> ShapelyResult:
+    def to_shapely(self, *, faces: bool = False) -> ShapelyResult:
         """The result as a shapely geometry: ``Polygon`` (one loop), ``MultiPolygon``
-        (several), ``LineString`` (one path, or empty), ``MultiLineString`` (several).
+        (several), ``LineString`` (one path, or empty), ``MultiLineString`` (several); with
+        ``faces``, the regions the curves enclose, the faces of a network too, as a
+        ``GeometryCollection`` of polygons. See :func:`sigdt.to_shapely`.
 
         Needs the optional dependency ``shapely`` (the ``shapely`` extra, or
         ``pip install shapely``).
         """
         from .shapely import to_shapely
 
-        return to_shapely(self)
+        return to_shapely(self, faces=faces)
 
     def to_geopandas(self) -> GeoDataFrame:
         """The result as a GeoPandas ``GeoDataFrame`` in :attr:`crs`: one row per polygon

@@ -19,24 +19,31 @@ def _rings(rec: Reconstruction) -> list[np.ndarray]:
     return [rec.vertices[loop] for loop in rec.loops]
 
 
-def to_shapely(rec: Reconstruction) -> ShapelyResult:
+def to_shapely(rec: Reconstruction, *, faces: bool = False) -> ShapelyResult:
     """The result as a shapely geometry: loops as polygons, open paths as lines.
 
     A loop inside another one (SIG-AUTO returns nested curves, such as the two outlines of
     an ``O``) is a hole of it, and a loop inside that hole is a new polygon again
-    (:attr:`~sigdt.Reconstruction.polygons`, decided with exact predicates).
+    (:attr:`~sigdt.Reconstruction.polygons`, decided with exact predicates). The paths of
+    a network (status ``"network"``) end at its junctions, so their lines are noded.
 
     Parameters
     ----------
     rec : Reconstruction
         A result of :func:`sigdt.reconstruct`.
+    faces : bool, default False
+        Return the regions the curves enclose instead: the polygons of the loops, and the
+        faces the paths bound (``shapely.polygonize`` of the noded lines: the cells of a
+        grid, the countries between borders); paths that bound nothing are dropped.
 
     Returns
     -------
     shapely.Geometry
         ``Polygon`` for one polygon, ``MultiPolygon`` for several, ``LineString`` for one
         open path or an empty result, ``MultiLineString`` for several paths,
-        ``GeometryCollection`` for polygons and paths together.
+        ``GeometryCollection`` for polygons and paths together. With ``faces``: a
+        ``GeometryCollection`` of polygons (faces of a network share edges, which a
+        ``MultiPolygon`` does not allow; empty when nothing is enclosed).
 
     Raises
     ------
@@ -48,6 +55,18 @@ def to_shapely(rec: Reconstruction) -> ShapelyResult:
     >>> import sigdt
     >>> sigdt.to_shapely(sigdt.reconstruct([[0, 0], [1, 0], [1, 1], [0, 1]])).area
     1.0
+
+    A theta: a circle and a chord crossing it, read as a network of three paths between
+    two junctions, enclosing two faces.
+
+    >>> import numpy as np
+    >>> t = np.linspace(0, 2 * np.pi, 48, endpoint=False)
+    >>> chord = np.c_[np.linspace(-1, 1, 17)[1:-1], np.zeros(15)]
+    >>> rec = sigdt.reconstruct(np.r_[np.c_[np.cos(t), np.sin(t)], chord])
+    >>> rec.status, len(rec.junctions), len(rec.to_shapely().geoms)
+    ('network', 2, 3)
+    >>> len(rec.to_shapely(faces=True).geoms)
+    2
     """
     import shapely
 
@@ -56,6 +75,9 @@ def to_shapely(rec: Reconstruction) -> ShapelyResult:
         shapely.Polygon(rings[shell], [rings[h] for h in holes]) for shell, holes in rec.polygons
     ]
     lines = [rec.vertices[p] for p in rec.paths]
+    if faces:
+        enclosed = shapely.polygonize([shapely.LineString(line) for line in lines]).geoms
+        return shapely.GeometryCollection(polygons + list(enclosed))
     if len(polygons) == 1 and not lines:
         return polygons[0]
     if polygons and not lines:

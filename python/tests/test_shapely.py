@@ -185,3 +185,36 @@ def test_a_result_whose_indices_are_out_of_range_is_refused():
         sigdt.Reconstruction(square.points, fields).to_wkt()
     with pytest.raises(ValueError, match="unknown status"):
         sigdt.Reconstruction(square.points, {**square._fields, "status": "nope"}).to_wkt()
+
+
+def warped_grid(cells: int, per_side: int = 8) -> np.ndarray:
+    """The lines of a `cells` x `cells` grid, sampled `per_side` times a cell side with every
+    crossing a sample of both lines, bent into smooth curves."""
+    steps = np.arange(cells * per_side + 1) / per_side
+    lines = np.arange(cells + 1, dtype=float)
+    u_rows, v_rows = np.meshgrid(steps, lines)
+    v_cols, u_cols = np.meshgrid(steps[np.arange(steps.size) % per_side != 0], lines)
+    u, v = np.r_[u_rows.ravel(), u_cols.ravel()], np.r_[v_rows.ravel(), v_cols.ravel()]
+    return np.c_[u + 0.2 * np.sin(0.9 * v), v + 0.2 * np.sin(0.8 * u)]
+
+
+def test_a_network_is_noded_lines_and_its_faces_are_polygons():
+    cells = 4
+    rec = sigdt.reconstruct(warped_grid(cells))
+    assert rec.status == "network" and not rec.warns
+    lines = rec.to_shapely()
+    assert lines.geom_type == "MultiLineString"
+    # Paths end at junctions: the lines meet only at their ends (noded).
+    assert shapely.union_all(lines).equals(lines) and len(lines.geoms) == len(rec.paths)
+    faces = rec.to_shapely(faces=True)
+    assert faces.geom_type == "GeometryCollection"
+    assert len(faces.geoms) == cells * cells
+    assert all(face.geom_type == "Polygon" and face.is_valid for face in faces.geoms)
+    # The cells tile the grid's frame: the warp bends its sides, so the area is near cells².
+    assert faces.area == pytest.approx(shapely.union_all(faces.geoms).area)
+    assert faces.area == pytest.approx(cells * cells, rel=0.1)
+    # Loops are faces too, and open curves bound nothing.
+    circle = sigdt.reconstruct(blob(60))
+    assert circle.to_shapely(faces=True).area == pytest.approx(circle.to_shapely().area)
+    line = sigdt.reconstruct(np.c_[np.linspace(0, 1, 20), np.linspace(0, 1, 20) ** 2])
+    assert line.to_shapely(faces=True).is_empty
