@@ -45,6 +45,7 @@ from pathlib import Path
 
 import numpy as np
 import sigdt
+from release_binary import cli_binary
 
 ROOT = Path(__file__).resolve().parents[2]
 FIRST_CALL = """
@@ -54,14 +55,6 @@ start = time.perf_counter()
 sigdt.reconstruct(points)
 print((time.perf_counter() - start) * 1e3)
 """
-
-
-def cli_binary() -> Path:
-    target = Path(os.environ.get("CARGO_TARGET_DIR") or ROOT / "target")
-    binary = (target if target.is_absolute() else ROOT / target) / "release" / "sigdt"
-    if not binary.is_file():
-        sys.exit(f"bench: {binary} is missing; run `make build` first")
-    return binary
 
 
 def default_input() -> Path:

@@ -40,7 +40,8 @@ from pathlib import Path
 
 import numpy as np
 import sigdt
-from network_scores import cli_binary, degrees, edges_of, labelled_cases
+from network_scores import degrees, edges_of, labelled_cases
+from release_binary import cli_binary
 
 MAX_TURN = np.radians(60.0)
 SHADOW = MAX_TURN / 2

@@ -17,25 +17,16 @@ ground truth's.
 from __future__ import annotations
 
 import argparse
-import os
 import subprocess
 import sys
 from collections import Counter
 from pathlib import Path
 
 import sigdt
+from release_binary import cli_binary
 
-ROOT = Path(__file__).resolve().parents[2]
 # The methods that move the points or place their own vertices have no edges to score.
 METHODS = [m for m in sigdt.METHODS if m not in ("stretch-denoise", "optimal-transport")]
-
-
-def cli_binary() -> Path:
-    target = Path(os.environ.get("CARGO_TARGET_DIR") or ROOT / "target")
-    binary = (target if target.is_absolute() else ROOT / target) / "release" / "sigdt"
-    if not binary.is_file():
-        sys.exit(f"network_scores: {binary} is missing; run `make build` first")
-    return binary
 
 
 def labelled_cases(folder: Path, script: str) -> list[Path]:

@@ -153,6 +153,11 @@ impl PairGraph {
         PairGraph { start, neighbours }
     }
 
+    /// The edges `[v, w]` of `v` with `v < w` (each edge of the graph at one of its ends).
+    pub fn edges_at(&self, v: u32) -> impl Iterator<Item = [u32; 2]> + '_ {
+        self.neighbours(v).iter().filter(move |&&w| v < w).map(move |&w| [v, w])
+    }
+
     pub fn neighbours(&self, v: u32) -> &[u32] {
         &self.neighbours[self.start[v as usize] as usize..self.start[v as usize + 1] as usize]
     }

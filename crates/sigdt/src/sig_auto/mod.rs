@@ -217,19 +217,30 @@ fn network_reading(
     }
     let mut network: Vec<[u32; 2]> = read_pairs.into_iter().filter(|&[a, _]| !inside(a)).collect();
     for v in (0..n as u32).filter(|&v| inside(v)) {
-        network.extend(pairs.neighbours(v).iter().filter(|&&w| v < w).map(|&w| [v, w]));
+        network.extend(pairs.edges_at(v));
     }
     let outliers: Vec<u32> =
         outlier_vertices(rec, &vertex_of).into_iter().filter(|&v| !inside(v)).collect();
-    let mut read = finish(dt, network, Vec::new(), &outliers, rec.stats);
-    if read.status == Status::Branching {
+    checked_network(dt, network, &outliers, rec.stats, networks)
+}
+
+/// The result whose edges are `pairs`, a network read from `networks`' junctions, with
+/// `outliers` left out, unless the sampling check finds it broken (it doubles back, or its
+/// edges reach over points): then it is no better read than the curves were.
+fn checked_network(
+    dt: &Triangulation,
+    pairs: Vec<[u32; 2]>,
+    outliers: &[u32],
+    stats: Stats,
+    networks: &Networks,
+) -> Option<Reconstruction> {
+    let mut rec = finish(dt, pairs, Vec::new(), outliers, stats);
+    if rec.status == Status::Branching {
         // Its branches are junctions read as such, not stray edges of a graph.
-        read.status = Status::Network;
+        rec.status = Status::Network;
     }
-    read.diagnosis = diagnose_with(dt, &read, Spacing::Known(networks.spacing()));
-    // A network the sampling check finds broken (it doubles back, or its edges reach over
-    // points) is no better read than the curves were.
-    (!curves_fail(&read.diagnosis)).then_some(read)
+    rec.diagnosis = diagnose_with(dt, &rec, Spacing::Known(networks.spacing()));
+    (!curves_fail(&rec.diagnosis)).then_some(rec)
 }
 
 /// The reading, checked, with the wired-in outliers cut and the coarse reading where the
@@ -532,14 +543,8 @@ fn read(
 fn whole_network(dt: &Triangulation, networks: &Networks, stats: Stats) -> Option<Reconstruction> {
     let (pairs, _) = networks.get();
     let n = dt.num_vertices() as u32;
-    let edges = (0..n)
-        .flat_map(|v| pairs.neighbours(v).iter().filter(move |&&w| v < w).map(move |&w| [v, w]));
-    let mut rec = finish(dt, edges.collect(), Vec::new(), &[], stats);
-    if rec.status == Status::Branching {
-        rec.status = Status::Network;
-    }
-    rec.diagnosis = diagnose_with(dt, &rec, Spacing::Known(networks.spacing()));
-    (!curves_fail(&rec.diagnosis)).then_some(rec)
+    let edges = (0..n).flat_map(|v| pairs.edges_at(v)).collect();
+    checked_network(dt, edges, &[], stats, networks)
 }
 
 /// What reading the components of one round gave, in the vertex numbers of its
