@@ -1,6 +1,6 @@
 //! The cases of a labelled folder that a run asks for: the rows of its `index.csv`, read by
 //! the lab's one reader ([`sigdt_lab::dataset`]), filtered by `--categories` and `--names`;
-//! and their sample spacing, a column that reader does not keep.
+//! and their sample spacing and half, columns that reader does not keep.
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -52,30 +52,50 @@ pub fn select(dir: &Path, categories: &[String], names: Option<&str>) -> Result<
 /// here, from the file that [`select`] has already checked.
 pub fn spacings(dir: &Path) -> Result<HashMap<String, f64>> {
     let path = dir.join("index.csv");
+    let mut out = HashMap::new();
+    for (line, case, text) in column(dir, "spacing")? {
+        match text.as_str() {
+            "" | "-" | "nan" | "NaN" => {}
+            text => match text.parse::<f64>() {
+                Ok(s) if s.is_finite() && s > 0.0 => {
+                    out.insert(case, s);
+                }
+                _ => bail!("{}:{line}: spacing '{text}' is not a number > 0", path.display()),
+            },
+        }
+    }
+    Ok(out)
+}
+
+/// The `half` column of `index.csv` in `dir` (for example `design` and `held-out`: the half
+/// of the cases a method was tuned on, and the half kept for checking it), by case name;
+/// empty when there is no such column, and without the cases whose field is empty.
+pub fn halves(dir: &Path) -> Result<HashMap<String, String>> {
+    let fields = column(dir, "half")?;
+    Ok(fields.into_iter().filter(|(_, _, half)| !half.is_empty()).map(|(_, c, h)| (c, h)).collect())
+}
+
+/// The column `name` of `index.csv` in `dir` as (line, case name, field), both trimmed, in
+/// file order; nothing when there is no such column.
+fn column(dir: &Path, name: &str) -> Result<Vec<(usize, String, String)>> {
+    let path = dir.join("index.csv");
     let text = std::fs::read_to_string(&path)
         .with_context(|| format!("{}: cannot read the case index", path.display()))?;
     let records = parse_csv(text.strip_prefix('\u{feff}').unwrap_or(&text));
     let mut rows =
         records.iter().enumerate().filter(|(_, r)| r.iter().any(|f| !f.trim().is_empty()));
-    let Some((_, header)) = rows.next() else { return Ok(HashMap::new()) };
-    let column = |name: &str| header.iter().position(|h| h.trim() == name);
-    let (Some(name), Some(spacing)) = (column("name"), column("spacing")) else {
-        return Ok(HashMap::new());
+    let Some((_, header)) = rows.next() else { return Ok(Vec::new()) };
+    let position = |column: &str| header.iter().position(|h| h.trim() == column);
+    let (Some(case), Some(field)) = (position("name"), position(name)) else {
+        return Ok(Vec::new());
     };
-    let mut out = HashMap::new();
-    for (k, row) in rows {
-        let (Some(case), Some(text)) = (row.get(name), row.get(spacing)) else { continue };
-        match text.trim() {
-            "" | "-" | "nan" | "NaN" => {}
-            text => match text.parse::<f64>() {
-                Ok(s) if s.is_finite() && s > 0.0 => {
-                    out.insert(case.trim().to_string(), s);
-                }
-                _ => bail!("{}:{}: spacing '{text}' is not a number > 0", path.display(), k + 1),
-            },
-        }
-    }
-    Ok(out)
+    let fields = rows
+        .filter_map(|(k, row)| {
+            let (case, text) = (row.get(case)?, row.get(field)?);
+            Some((k + 1, case.trim().to_string(), text.trim().to_string()))
+        })
+        .collect();
+    Ok(fields)
 }
 
 #[cfg(test)]
@@ -111,5 +131,17 @@ mod tests {
         std::fs::write(dir.path().join("index.csv"), "name,category,spacing\na,open,-1\n").unwrap();
         let err = select(dir.path(), &[], None).unwrap_err().to_string();
         assert!(err.contains("index.csv:2: spacing '-1'"), "{err}");
+    }
+
+    #[test]
+    fn reads_the_half_column() {
+        let dir = tempfile::tempdir().unwrap();
+        let index = "name,half,category\na, design ,open\nb,held-out,open\nc,,open\n";
+        std::fs::write(dir.path().join("index.csv"), index).unwrap();
+        let halves = halves(dir.path()).unwrap();
+        assert_eq!(halves.len(), 2);
+        assert_eq!((halves["a"].as_str(), halves["b"].as_str()), ("design", "held-out"));
+        std::fs::write(dir.path().join("index.csv"), "name,category\na,open\n").unwrap();
+        assert!(super::halves(dir.path()).unwrap().is_empty());
     }
 }

@@ -7,7 +7,9 @@
 //! - `suite`: a whole run, from the cases to the report's data;
 //! - `runner` and `worker`: one worker process per (case, method), with a time limit;
 //! - `overlap`: proximity-graph statistics and the graph-based ε of the labelled sets;
-//! - `record`, `report`, `chart`: the results, the report and its charts.
+//! - `stray`: how far a case's labelled points stray from its true curve;
+//! - `record`, `report`, `chart`: the results, the report (with `numbers.json`) and its
+//!   charts.
 
 pub mod cases;
 pub mod chart;
@@ -16,5 +18,6 @@ pub mod overlap;
 pub mod record;
 pub mod report;
 pub mod runner;
+mod stray;
 pub mod suite;
 pub mod worker;

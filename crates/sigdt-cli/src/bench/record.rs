@@ -48,6 +48,10 @@ pub struct Run {
 
 /// A result judged against the case's true curve as a user would (`docs/evaluation.md`,
 /// "Judged as a user would").
+///
+/// A result is good, the answer a user can take as is, when it has the truth's topology,
+/// covers its region (IoU at least [`GOOD_IOU`](Self::GOOD_IOU)) and stays near its curve
+/// (Hausdorff distance at most [`hausdorff_bound_over_s`](Self::hausdorff_bound_over_s)).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CurveScore {
     /// Area of the intersection over area of the union of the result's region and the true
@@ -59,6 +63,12 @@ pub struct CurveScore {
     /// `spacing` column, else the median ground-truth edge length); infinite for a result
     /// without edges, `None` when the case gives no spacing.
     pub hausdorff_over_s: Option<f64>,
+    /// The most [`hausdorff_over_s`](Self::hausdorff_over_s) of a good result: 1 + d_max / s,
+    /// where d_max is the largest distance from a labelled point (one on some ground-truth
+    /// edge) to the true curve (`bench::stray`): 1 on clean data, more on noisy data, where
+    /// the input points themselves stray that far. `None` when the case gives no spacing (or
+    /// in a `results.csv` written before it): then no result is good.
+    pub hausdorff_bound_over_s: Option<f64>,
     /// The result said it may be wrong (`Reconstruction::warns`); imported results never do.
     pub warned: bool,
     /// The points the result passes through no edge of, against the truth's; `None` for a
@@ -112,9 +122,26 @@ impl CurveScore {
     /// The least IoU of a good result.
     pub const GOOD_IOU: f64 = 0.95;
 
-    /// Topology right and IoU at least [`Self::GOOD_IOU`].
+    /// Topology right, IoU at least [`Self::GOOD_IOU`] and the Hausdorff distance to the
+    /// true curve within its bound: at most one spacing farther from it than the labelled
+    /// points themselves are. A spike out to an outlier is not good, however little area it
+    /// adds.
     pub fn good(&self) -> bool {
-        self.topology_right && self.iou >= Self::GOOD_IOU
+        let near = match (self.hausdorff_over_s, self.hausdorff_bound_over_s) {
+            (Some(h), Some(bound)) => h <= bound,
+            _ => false,
+        };
+        self.topology_right && self.iou >= Self::GOOD_IOU && near
+    }
+
+    /// Good, and no warning: the answer a user can take as is.
+    pub fn good_silent(&self) -> bool {
+        self.good() && !self.warned
+    }
+
+    /// Good, but warned: a false alarm.
+    pub fn good_warned(&self) -> bool {
+        self.good() && self.warned
     }
 
     /// Not good, and no warning said so.
@@ -179,6 +206,16 @@ pub struct BenchData {
     pub overlap: Vec<OverlapStat>,
     /// Manifold cases with `epsilon` below this are "well sampled" (the paper uses 1).
     pub eps_threshold: f64,
+    /// The half of each case, by index into [`cases`](Self::cases): the `half` column of
+    /// `index.csv` (`design`, `held-out`), empty (or shorter than the cases) without one.
+    pub halves: Vec<String>,
+}
+
+impl BenchData {
+    /// The half of case `case` (`index.csv`'s `half` column), `""` when it has none.
+    pub fn half(&self, case: usize) -> &str {
+        self.halves.get(case).map_or("", String::as_str)
+    }
 }
 
 impl Default for BenchData {
@@ -193,13 +230,15 @@ impl Default for BenchData {
             entries: Vec::new(),
             overlap: Vec::new(),
             eps_threshold: 1.0,
+            halves: Vec::new(),
         }
     }
 }
 
 /// The columns of `results.csv`, in order: those of earlier versions, then the
-/// [`CurveScore`] (empty for cases without a true curve).
-pub const CSV_HEADER: [&str; 26] = [
+/// [`CurveScore`] (empty for cases without a true curve; its Hausdorff bound last), then the
+/// case's half (empty without a `half` column in `index.csv`).
+pub const CSV_HEADER: [&str; 28] = [
     "name",
     "category",
     "n_points",
@@ -226,10 +265,16 @@ pub const CSV_HEADER: [&str; 26] = [
     "outliers",
     "outliers_left_out",
     "curve_points_left_out",
+    "hausdorff_bound_over_s",
+    "half",
 ];
 
-/// The columns of `results.csv` before the [`CurveScore`]: such files are still read.
-const OLD_COLUMNS: usize = 17;
+/// The columns of `results.csv` before the [`CurveScore`], and before its Hausdorff bound
+/// and the half: such files are still read.
+const OLD_COLUMNS: [usize; 2] = [17, 26];
+
+/// The columns before the [`CurveScore`]'s.
+const CURVE_START: usize = OLD_COLUMNS[0];
 
 /// Writes one row per entry (case × method) with the header [`CSV_HEADER`].
 ///
@@ -276,6 +321,7 @@ pub fn write_results_csv(data: &BenchData, mut w: impl Write) -> io::Result<()> 
             }
         });
         row.extend(curve);
+        row.push(data.half(entry.case).to_string());
         let fields: Vec<String> = row.iter().map(|f| quote(f)).collect();
         writeln!(w, "{}", fields.join(","))?;
     }
@@ -283,7 +329,8 @@ pub fn write_results_csv(data: &BenchData, mut w: impl Write) -> io::Result<()> 
 }
 
 /// Reads a file written by [`write_results_csv`], or by a version before the [`CurveScore`]
-/// columns.
+/// columns or before the Hausdorff bound and the half (no result read from such a file is
+/// good: [`CurveScore::hausdorff_bound_over_s`]).
 ///
 /// Cases and methods are listed in the order they first appear. The fields that the CSV does
 /// not hold (`data_dir`, `command`, `machine`, `overlap`) are left empty, and `time_limit_s`
@@ -295,7 +342,7 @@ pub fn read_results_csv(mut r: impl Read) -> io::Result<BenchData> {
     r.read_to_string(&mut text)?;
     let mut records = parse_csv(&text).into_iter();
     let header = records.next().unwrap_or_default();
-    if header != CSV_HEADER && header != CSV_HEADER[..OLD_COLUMNS] {
+    if header != CSV_HEADER && !OLD_COLUMNS.iter().any(|&n| header == CSV_HEADER[..n]) {
         return Err(invalid(1, "the header is not that of results.csv"));
     }
     let mut data = BenchData::default();
@@ -317,6 +364,7 @@ pub fn read_results_csv(mut r: impl Read) -> io::Result<BenchData> {
                     epsilon: opt_num(&rec[3], line)?,
                 };
                 data.cases.push(Case { row, graph_epsilon: opt_num(&rec[4], line)? });
+                data.halves.push(rec.get(CSV_HEADER.len() - 1).cloned().unwrap_or_default());
                 data.cases.len() - 1
             }
         };
@@ -334,7 +382,7 @@ pub fn read_results_csv(mut r: impl Read) -> io::Result<BenchData> {
                 rmse: opt_num(&rec[13], line)?,
                 hausdorff: opt_num(&rec[14], line)?,
                 symdiff: opt_num(&rec[15], line)?,
-                curve: read_curve(&rec[OLD_COLUMNS..], line)?,
+                curve: read_curve(&rec[CURVE_START..], line)?,
             }),
             "failed" => Outcome::Failed(rec[16].clone()),
             "timeout" => {
@@ -345,6 +393,9 @@ pub fn read_results_csv(mut r: impl Read) -> io::Result<BenchData> {
             other => return Err(invalid(line, &format!("unknown outcome {other:?}"))),
         };
         data.entries.push(Entry { case, method: rec[5].clone(), outcome });
+    }
+    if data.halves.iter().all(String::is_empty) {
+        data.halves.clear();
     }
     Ok(data)
 }
@@ -359,7 +410,7 @@ fn outcome_row(outcome: &str, time_ms: String, message: String) -> [String; 11] 
 }
 
 /// The [`CurveScore`] columns of a run.
-fn curve_fields(c: &CurveScore) -> [String; 9] {
+fn curve_fields(c: &CurveScore) -> [String; 10] {
     let flag = |b: bool| u8::from(b).to_string();
     let count =
         |f: fn(&LeftOut) -> usize| c.left_out.as_ref().map_or(String::new(), |l| f(l).to_string());
@@ -373,17 +424,22 @@ fn curve_fields(c: &CurveScore) -> [String; 9] {
         count(|l| l.outliers),
         count(|l| l.outliers_left_out),
         count(|l| l.curve_points_left_out),
+        opt(c.hausdorff_bound_over_s),
     ]
 }
 
-/// The [`CurveScore`] of the columns after the first [`OLD_COLUMNS`]: `None` when they are
-/// empty or absent (`good` and `silent_wrong` follow from the others).
+/// The [`CurveScore`] of the columns from [`CURVE_START`]: `None` when they are empty or
+/// absent (`good` and `silent_wrong` follow from the others).
 fn read_curve(fields: &[String], line: usize) -> io::Result<Option<CurveScore>> {
     let Some(iou) = fields.first().filter(|f| !f.is_empty()) else { return Ok(None) };
     Ok(Some(CurveScore {
         iou: num(iou, line)?,
         topology_right: fields[1] == "1",
         hausdorff_over_s: opt_num(&fields[2], line)?,
+        hausdorff_bound_over_s: match fields.get(9) {
+            Some(bound) => opt_num(bound, line)?,
+            None => None,
+        },
         warned: fields[3] == "1",
         left_out: match fields.get(6).filter(|f| !f.is_empty()) {
             None => None,
@@ -443,6 +499,7 @@ mod tests {
             iou: 0.97,
             topology_right: false,
             hausdorff_over_s: Some(f64::INFINITY),
+            hausdorff_bound_over_s: Some(1.5),
             warned: false,
             left_out: Some(LeftOut { outliers: 2, outliers_left_out: 1, curve_points_left_out: 0 }),
         };
@@ -472,9 +529,49 @@ mod tests {
         assert!(text.contains("\"a,b\",manifold,12,0.5,,sig-connect2d,ok,1,manifold,12,0,0,"));
         assert!(text.contains("\"panicked: \"\"x\"\", then\nexit 101\""));
         // The curve columns: empty without a true curve; the topology is wrong, so not good.
-        assert!(text.contains(",2500,,,,timed out after 2.5 s,,,,,,,,,\n"), "{text}");
-        assert!(text.contains(",0,,0.97,0,inf,0,0,1,2,1,0\n"), "{text}");
+        assert!(text.contains(",2500,,,,timed out after 2.5 s,,,,,,,,,,,\n"), "{text}");
+        assert!(text.contains(",0,,0.97,0,inf,0,0,1,2,1,0,1.5,\n"), "{text}");
         assert_eq!(read_results_csv(text.as_bytes()).unwrap(), data);
+        // With halves, each row names its case's.
+        let halved = BenchData { halves: vec!["design".into(), "held-out".into()], ..data };
+        let mut buf = Vec::new();
+        write_results_csv(&halved, &mut buf).unwrap();
+        let text = String::from_utf8(buf).unwrap();
+        assert!(text.contains(",1,2,1,0,1.5,held-out\n"), "{text}");
+        assert!(text.contains(",timed out after 2.5 s,,,,,,,,,,,held-out\n"), "{text}");
+        assert_eq!(read_results_csv(text.as_bytes()).unwrap(), halved);
+    }
+
+    /// A result judged against its true curve, topology right, unwarned.
+    fn judged(iou: f64, h: f64, bound: f64) -> CurveScore {
+        CurveScore {
+            iou,
+            topology_right: true,
+            hausdorff_over_s: Some(h),
+            hausdorff_bound_over_s: Some(bound),
+            warned: false,
+            left_out: None,
+        }
+    }
+
+    #[test]
+    fn good_needs_topology_area_and_nearness() {
+        // A clean case: the bound is one spacing. Right topology and IoU 0.99, but a spike
+        // out to an outlier 2.5 s away: not good, and silently so.
+        let spike = judged(0.99, 2.5, 1.0);
+        assert!(!spike.good() && spike.silent_wrong());
+        assert!(judged(0.99, 0.4, 1.0).good_silent());
+        // On noisy data the points stray up to 1.5 s: a result through them is good.
+        assert!(judged(0.99, 2.3, 2.5).good());
+        // The other conditions still hold, and the bound is inclusive.
+        assert!(judged(0.95, 1.0, 1.0).good() && !judged(0.949, 0.1, 1.0).good());
+        let wrong = CurveScore { topology_right: false, ..judged(0.99, 0.1, 1.0) };
+        assert!(!wrong.good());
+        // Without a spacing there is no bound: nothing is good.
+        let unknown = CurveScore { hausdorff_bound_over_s: None, ..judged(0.99, 0.1, 1.0) };
+        assert!(!unknown.good());
+        let warned = CurveScore { warned: true, ..judged(0.99, 0.1, 1.0) };
+        assert!(warned.good_warned() && !warned.good_silent() && !warned.silent_wrong());
     }
 
     #[test]
@@ -491,10 +588,20 @@ mod tests {
     fn files_without_the_curve_columns_are_read() {
         let old = format!(
             "{}\nc,open,30,,,crust,ok,1,curves,4,0,0,0.5,0,0,0,\n",
-            CSV_HEADER[..OLD_COLUMNS].join(",")
+            CSV_HEADER[..OLD_COLUMNS[0]].join(",")
         );
         let data = read_results_csv(old.as_bytes()).unwrap();
         assert!(matches!(&data.entries[0].outcome, Outcome::Done(r) if r.curve.is_none()));
+        // Before the Hausdorff bound and the half: read, without a bound, so not good.
+        let old = format!(
+            "{}\nc,open,30,,,crust,ok,1,curves,4,0,0,0.5,0,0,0,,0.99,1,0.2,0,1,0,0,0,0\n",
+            CSV_HEADER[..OLD_COLUMNS[1]].join(",")
+        );
+        let data = read_results_csv(old.as_bytes()).unwrap();
+        let Outcome::Done(Run { curve: Some(c), .. }) = &data.entries[0].outcome else {
+            panic!("{data:?}")
+        };
+        assert!(c.hausdorff_bound_over_s.is_none() && !c.good() && data.halves.is_empty());
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! One benchmark run, from the selected cases to the data of its report: the graph-based ε
 //! of every case, every (case, method) pair in a worker process, the imported results of
-//! other tools, the proximity-graph statistics and a description of the machine.
+//! other tools, the proximity-graph statistics, the halves of the cases and a description
+//! of the machine.
 
 use std::path::PathBuf;
 
@@ -28,6 +29,9 @@ pub fn run(
         entries.extend(runner::import(label, dir, plan, &cases)?);
         methods.push(label.clone());
     }
+    let half = super::cases::halves(plan.dir)?;
+    let halves = cases.iter().map(|c| half.get(&c.row.name).cloned().unwrap_or_default());
+    let halves = halves.collect();
     Ok(BenchData {
         data_dir: plan.dir.display().to_string(),
         command: std::env::args().collect::<Vec<_>>().join(" "),
@@ -38,6 +42,7 @@ pub fn run(
         cases,
         entries,
         eps_threshold: 1.0,
+        halves,
     })
 }
 

@@ -12,6 +12,7 @@ use sigdt::{Edge, Options, Point};
 use sigdt_lab::dataset::CaseFiles;
 
 use super::record::{CurveScore, LeftOut, Run};
+use super::stray;
 
 /// How often to run the method for timing: once to warm up, then `repeat` times (fewer
 /// when one run takes long), reporting the median.
@@ -26,7 +27,7 @@ impl Run {
         let curve = self.curve.as_ref();
         format!(
             "exact={} status={} edges={} missing={} extra={} time_ms={:e} rmse={} hausdorff={} \
-             symdiff={} iou={} topology_right={} h_over_s={} warned={} left_out={}",
+             symdiff={} iou={} topology_right={} h_over_s={} h_bound={} warned={} left_out={}",
             u8::from(self.exact),
             self.status,
             self.edges,
@@ -39,6 +40,7 @@ impl Run {
             opt(curve.map(|c| c.iou)),
             flag(curve.map(|c| c.topology_right)),
             opt(curve.and_then(|c| c.hausdorff_over_s)),
+            opt(curve.and_then(|c| c.hausdorff_bound_over_s)),
             flag(curve.map(|c| c.warned)),
             curve.and_then(|c| c.left_out).map_or("-".to_string(), |l| format!(
                 "{}/{}/{}",
@@ -64,6 +66,7 @@ impl Run {
                 iou,
                 topology_right: field("topology_right")? == "1",
                 hausdorff_over_s: opt("h_over_s")?,
+                hausdorff_bound_over_s: opt("h_bound")?,
                 warned: field("warned")? == "1",
                 left_out: match field("left_out")? {
                     "-" => None,
@@ -145,6 +148,9 @@ pub struct Truth {
     /// The spacing the points were sampled at, when known: the unit of the Hausdorff
     /// distance to the curve (else the median ground-truth edge length).
     pub spacing: Option<f64>,
+    /// `d_max`: how far the labelled input points stray from the curve at most
+    /// ([`stray::stray`]); 0 without a curve.
+    pub stray: f64,
 }
 
 impl Truth {
@@ -204,7 +210,9 @@ fn read_case(files: &CaseFiles, spacing: Option<f64>) -> Result<(Vec<Point>, Tru
         }
         None => None,
     };
-    Ok((pts, Truth { gt, positions, curve, spacing }))
+    let stray =
+        curve.as_ref().map_or(0.0, |(points, edges)| stray::stray(&pts, &gt, (points, edges)));
+    Ok((pts, Truth { gt, positions, curve, spacing, stray }))
 }
 
 /// Scores the edge file `edges` (another tool's result on the case, sampled at `spacing`
@@ -247,10 +255,12 @@ pub fn score(
             // The Hausdorff distance is a fraction of the curve's diagonal; none: no edge.
             let hausdorff =
                 distances.map_or(f64::INFINITY, |d| d.hausdorff * diagonal(&all, &reference_edges));
+            let unit = truth.unit();
             Some(CurveScore {
                 iou: region.iou,
                 topology_right: region.topology_right(),
-                hausdorff_over_s: truth.unit().map(|unit| hausdorff / unit),
+                hausdorff_over_s: unit.map(|unit| hausdorff / unit),
+                hausdorff_bound_over_s: unit.map(|unit| 1.0 + truth.stray / unit),
                 warned,
                 left_out: indexed_like_input
                     .then(|| LeftOut::count(vertices.len(), edges, &truth.gt)),
@@ -299,7 +309,7 @@ mod tests {
         let moved = [[-0.1, 0.0], [1.1, 0.0], [1.1, 1.0], [-0.1, 1.0]];
         let square = vec![[0, 1], [0, 3], [1, 2], [2, 3]];
         let (positions, gt) = (square_points.clone(), square.clone());
-        let truth = Truth { gt, positions, curve: None, spacing: None };
+        let truth = Truth { gt, positions, curve: None, spacing: None, stray: 0.0 };
         let same = score(&square_points, true, &truth, &square, "polygon", false, 1.0).unwrap();
         assert!(same.exact && same.rmse == Some(0.0));
         let off = score(&moved, true, &truth, &square, "polygon", false, 1.0).unwrap();
@@ -327,7 +337,7 @@ mod tests {
         let mut ring: Vec<Edge> = (1..n).map(|k| [k - 1, k]).collect();
         ring.push([0, n - 1]);
         let (gt, positions) = (square.clone(), corners.clone());
-        let polygon = Truth { gt, positions, curve: None, spacing: None };
+        let polygon = Truth { gt, positions, curve: None, spacing: None, stray: 0.0 };
         let curve = Truth { curve: Some((circle, ring)), ..polygon.clone() };
         let on_polygon = score(&corners, true, &polygon, &square, "polygon", true, 1.0).unwrap();
         let on_curve = score(&corners, true, &curve, &square, "polygon", true, 1.0).unwrap();
@@ -361,6 +371,66 @@ mod tests {
         assert_eq!(own.curve.unwrap().left_out, None, "its own vertices: nothing to count");
     }
 
+    /// A circle of radius 1 sampled at `n` points, radius `1 + bump(k)` for sample `k`, and an
+    /// outlier 2.5 spacings out between samples 0 and 1; its true curve a dense 720-gon.
+    fn sampled_circle(n: usize, bump: impl Fn(usize) -> f64) -> (Vec<Point>, Truth) {
+        let at = |a: f64, r: f64| [r * a.cos(), r * a.sin()];
+        let s = std::f64::consts::TAU / n as f64;
+        let mut points: Vec<Point> = (0..n).map(|k| at(s * k as f64, 1.0 + bump(k))).collect();
+        points.push(at(s / 2.0, 1.0 + 2.5 * s));
+        let ring = |n: usize| (1..n).map(|k| [k - 1, k]).chain([[0, n - 1]]).collect::<Vec<_>>();
+        let curve: Vec<Point> =
+            (0..720).map(|k| at(std::f64::consts::TAU * k as f64 / 720.0, 1.0)).collect();
+        let gt = ring(n);
+        let stray = stray::stray(&points, &gt, (&curve, &ring(720)));
+        let truth = Truth {
+            gt,
+            positions: points.clone(),
+            curve: Some((curve, ring(720))),
+            spacing: Some(s),
+            stray,
+        };
+        (points, truth)
+    }
+
+    #[test]
+    fn a_spike_out_to_an_outlier_is_not_good_noise_is_forgiven() {
+        // Clean samples: the ring is good; through the outlier instead of edge [0, 1], it
+        // has the right topology and IoU 0.99 but is 2.5 spacings off: silently wrong.
+        let n = 64;
+        let (points, truth) = sampled_circle(n, |_| 0.0);
+        assert!(truth.stray < 1e-4, "on the 720-gon, up to its sagitta: {}", truth.stray);
+        let ring: Vec<Edge> = truth.gt.clone();
+        let good = score(&points, true, &truth, &ring, "polygon", false, 1.0).unwrap();
+        let judged = good.curve.unwrap();
+        assert!(judged.good_silent(), "{judged:?}");
+        let mut spike: Vec<Edge> = ring[1..].to_vec();
+        spike.extend([[0, n], [1, n]]);
+        let judged =
+            score(&points, true, &truth, &spike, "polygon", false, 1.0).unwrap().curve.unwrap();
+        assert!(judged.topology_right && judged.iou > 0.99, "{judged:?}");
+        assert!((judged.hausdorff_over_s.unwrap() - 2.5).abs() < 0.05, "{judged:?}");
+        assert!((judged.hausdorff_bound_over_s.unwrap() - 1.0).abs() < 1e-3, "{judged:?}");
+        assert!(!judged.good() && judged.silent_wrong(), "{judged:?}");
+        // Noisy samples, ±0.3 spacings and one 1.2 spacings out: the ring through them is
+        // more than a spacing off, and good; the spike, 2.5 spacings off, is still beyond
+        // the bound of 2.2.
+        let s = std::f64::consts::TAU / n as f64;
+        let bump = |k: usize| match k {
+            9 => 1.2 * s,
+            k if k % 2 == 0 => 0.3 * s,
+            _ => -0.3 * s,
+        };
+        let (points, truth) = sampled_circle(n, bump);
+        assert!((truth.stray / s - 1.2).abs() < 1e-3, "{}", truth.stray / s);
+        let judged =
+            score(&points, true, &truth, &ring, "polygon", false, 1.0).unwrap().curve.unwrap();
+        assert!(judged.hausdorff_over_s.unwrap() > 1.1 && judged.good(), "{judged:?}");
+        let judged =
+            score(&points, true, &truth, &spike, "polygon", false, 1.0).unwrap().curve.unwrap();
+        assert!(judged.iou > 0.95 && !judged.good(), "{judged:?}");
+    }
+
     #[test]
     fn line_round_trips() {
         let m = Run {
@@ -380,13 +450,19 @@ mod tests {
             iou: 0.25,
             topology_right: true,
             hausdorff_over_s: Some(f64::INFINITY),
+            hausdorff_bound_over_s: Some(1.25),
             warned: true,
             left_out: Some(LeftOut { outliers: 3, outliers_left_out: 2, curve_points_left_out: 1 }),
         };
         let judged = Run { curve: Some(curve), ..m.clone() };
         assert_eq!(Run::parse(&judged.line()), Some(judged));
         let unspaced = Run {
-            curve: Some(CurveScore { hausdorff_over_s: None, left_out: None, ..curve }),
+            curve: Some(CurveScore {
+                hausdorff_over_s: None,
+                hausdorff_bound_over_s: None,
+                left_out: None,
+                ..curve
+            }),
             ..m
         };
         assert_eq!(Run::parse(&unspaced.line()), Some(unspaced));

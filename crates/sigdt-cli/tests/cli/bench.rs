@@ -84,13 +84,14 @@ fn write_circles(d: &Path, name: &str, rings: &[(usize, f64)]) {
 #[test]
 fn bench_judges_results_against_true_curves() {
     // A circle and an annulus with their true curves (the circle's spacing in the index, the
-    // annulus's the median edge length), beside the labelled folder's cases without one.
+    // annulus's the median edge length), beside the labelled folder's cases without one; the
+    // cases in two halves.
     let data = labelled_folder();
     let d = data.path();
     write_circles(d, "disc", &[(40, 1.0)]);
     write_circles(d, "annulus", &[(48, 2.0), (24, 1.0)]);
-    let index = "name,category,n_points,epsilon,spacing\ngon,manifold,12,0.27,\n\
-                 disc,outline-clean,40,,0.157\nannulus,outline-clean,72,,\n";
+    let index = "name,category,n_points,epsilon,spacing,half\ngon,manifold,12,0.27,,design\n\
+                 disc,outline-clean,40,,0.157,design\nannulus,outline-clean,72,,,held-out\n";
     fs::write(d.join("index.csv"), index).unwrap();
     let hull = tempdir();
     fs::write(hull.path().join("disc.edges"), edges_text(&cycle_edges(40))).unwrap();
@@ -111,12 +112,12 @@ fn bench_judges_results_against_true_curves() {
     let field = |row: &[String], column: &str| {
         row[header.iter().position(|h| *h == column).unwrap()].clone()
     };
-    // Cases without a true curve: the new columns are empty.
+    // Cases without a true curve: the curve columns are empty; the half is given.
     let gon = row("gon", ",sig-auto,");
-    assert!(
-        gon.len() == header.len() && gon[header.len() - 6..].iter().all(|f| f.is_empty()),
-        "{csv}"
-    );
+    let iou = header.iter().position(|h| *h == "iou").unwrap();
+    assert!(gon.len() == header.len() && header[header.len() - 1] == "half", "{csv}");
+    assert!(gon[iou..header.len() - 1].iter().all(|f| f.is_empty()), "{csv}");
+    assert_eq!(field(&gon, "half"), "design");
     // SIG-AUTO returns the circle and the annulus with its hole: good, and quiet about it.
     for name in ["disc", "annulus"] {
         let r = row(name, ",sig-auto,");
@@ -124,6 +125,9 @@ fn bench_judges_results_against_true_curves() {
         let h: f64 = field(&r, "hausdorff_over_s").parse().unwrap();
         assert!(iou > 0.98 && h < 0.1, "{name}: {csv}");
         assert_eq!(field(&r, "topology_right") + &field(&r, "good") + &field(&r, "warned"), "110");
+        // Sampled on the curve: the bound is one spacing (up to the 400-gon's sagitta).
+        let bound: f64 = field(&r, "hausdorff_bound_over_s").parse().unwrap();
+        assert!((1.0..1.01).contains(&bound), "{name}: {csv}");
     }
     // The import never warns: the disc is good, the annulus without its hole silently wrong.
     let disc = row("disc", ",hull,");
@@ -133,6 +137,30 @@ fn bench_judges_results_against_true_curves() {
     let md = fs::read_to_string(out.path().join("report.md")).unwrap();
     assert!(md.contains("## Judged against the true curve"), "{md}");
     assert!(md.contains("- `hull` (1): `annulus` (IoU 0.74"), "{md}");
+    assert!(md.contains("| Method | outline-clean · design | outline-clean · held-out |"), "{md}");
+    // numbers.json: the counts per method, category and half.
+    let json = fs::read_to_string(out.path().join("numbers.json")).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(json["folder"], ds);
+    let rows = json["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 2 * 3 * 3, "2 methods x (2 categories, all) x (all, 2 halves)");
+    let find = |method: &str, category: &str, half: &str| {
+        let key = |r: &&serde_json::Value| {
+            r["method"] == method && r["category"] == category && r["half"] == half
+        };
+        rows.iter().find(key).unwrap_or_else(|| panic!("{method} {category} {half}: {json}"))
+    };
+    let hull = find("hull", "outline-clean", "held-out");
+    assert_eq!(
+        (&hull["cases"], &hull["good"], &hull["silent_wrong"]),
+        (&1.into(), &0.into(), &1.into())
+    );
+    let sig = find("sig-auto", "all", "all");
+    assert_eq!(
+        (&sig["cases"], &sig["judged"], &sig["good_silent"]),
+        (&3.into(), &2.into(), &2.into())
+    );
+    assert!(find("sig-auto", "manifold", "design")["good"].is_null());
 }
 
 #[test]

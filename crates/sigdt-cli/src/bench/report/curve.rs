@@ -1,6 +1,8 @@
 //! The "Judged against the true curve" section: for the cases that carry their true curve,
-//! how often each method gives the right outline, how often it is wrong without a warning,
-//! and how close it comes (`docs/evaluation.md`, "Judged as a user would").
+//! how often each method gives the right outline (with or without a warning), how often it
+//! is wrong without a warning, and how close it comes (`docs/evaluation.md`, "Judged as a
+//! user would"). With halves (`index.csv`'s `half` column) each category is shown once per
+//! half.
 use super::summary::{bold_best, inline, table, Summary};
 use crate::bench::record::{CurveScore, LeftOut};
 
@@ -8,15 +10,16 @@ use crate::bench::record::{CurveScore, LeftOut};
 const LISTED: usize = 20;
 
 /// The section, or `None` when no case has a true curve. Rows are methods, columns the
-/// categories with true curves; a case counts when some method was judged on it, and a run
-/// that failed or timed out is neither good nor silent.
+/// categories with true curves (each once per half, when the cases have halves); a case
+/// counts when some method was judged on it, and a run that failed or timed out is neither
+/// good nor silent.
 pub(super) fn curve_section(s: &Summary) -> Option<String> {
     let columns: Vec<(String, Vec<usize>)> = s
         .categories()
         .into_iter()
         .map(|c| {
             let judged: Vec<usize> =
-                s.in_category(&c).into_iter().filter(|&i| has_curve(s, i)).collect();
+                s.in_category(&c).into_iter().filter(|&i| s.has_curve(i)).collect();
             (c, judged)
         })
         .filter(|(_, cases)| !cases.is_empty())
@@ -30,25 +33,43 @@ pub(super) fn curve_section(s: &Summary) -> Option<String> {
         "The {n} cases that carry their true curve (`NAME.curve.xy`, `NAME.curve.gt`), judged \
          as a user would; per method and category:\n\n"
     );
-    out += "- **good**: as many polygons, holes and open paths as the truth, and IoU ≥ 0.95 \
-            (area of the intersection over area of the union of the two regions, read \
-            even-odd, an open path closed by its chord); failures and time-outs are not good;\n\
-            - **silent wrong**: finished, not good, and no warning (the result's status or its \
-            sampling check; imported results never warn);\n\
-            - **warned while good**: false alarms, as a share of the good results (– without \
-            any);\n\
+    out += "- **good**: as many polygons, holes and open paths as the truth, IoU ≥ 0.95 (area \
+            of the intersection over area of the union of the two regions, read even-odd, an \
+            open path closed by its chord), and H ≤ s + d<sub>max</sub>: the symmetric \
+            Hausdorff distance H to the true curve at most one spacing s more than the \
+            farthest a labelled point (one on a ground-truth edge) lies from it, \
+            d<sub>max</sub> (0 on clean data, the noise on noisy data; a spike out to an \
+            outlier is not good); failures and time-outs are not good;\n\
+            - **good, no warning**: good, and the result did not warn (its status or its \
+            sampling check; imported results never warn): the answer a user can take as is; \
+            **good but warned**: false alarms;\n\
+            - **silent wrong**: finished, not good, and no warning;\n\
             - **outliers left out**: of the points without ground-truth edges (outliers), the \
             share the result passes through no edge of, over all cases of the category (– \
             without outliers); **curve points left out**: the points of the true curve the \
             result leaves without edges, in all, and in how many cases (– for methods that \
             place vertices of their own);\n\
-            - **median IoU**, **median H/s**: over the finished runs; H/s is the symmetric \
-            Hausdorff distance to the true curve over the case's spacing (`spacing` in \
-            `index.csv`, else the median ground-truth edge length), ∞ for an empty result.\n\n";
-    let tables: [(&str, Metric, bool); 7] = [
+            - **median IoU**, **median H/s**: over the finished runs; H/s is H over the \
+            case's spacing (`spacing` in `index.csv`, else the median ground-truth edge \
+            length), ∞ for an empty result.\n\n";
+    let halves = s.halves();
+    if !halves.is_empty() {
+        out += &format!(
+            "Each category is shown once per half of its cases (the `half` column of \
+             `index.csv`), side by side: {}.\n\n",
+            halves
+                .iter()
+                .map(|h| format!("`CATEGORY · {}`", inline(h)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    let split = s.by_half(columns.clone());
+    let tables: [(&str, Metric, bool); 8] = [
         ("Good", good, false),
+        ("Good, no warning", good_silent, false),
+        ("Good but warned", good_warned, true),
         ("Silent wrong", silent_wrong, true),
-        ("Warned while good", warned_good, true),
         ("Outliers left out", outliers_left_out, false),
         ("Curve points left out", curve_points_left_out, true),
         ("Median IoU", median_iou, false),
@@ -56,7 +77,7 @@ pub(super) fn curve_section(s: &Summary) -> Option<String> {
     ];
     for (title, metric, lower_is_better) in tables {
         out += &format!("### {title}\n\n");
-        out += &metric_table(s, &columns, metric, lower_is_better);
+        out += &metric_table(s, &split, metric, lower_is_better);
         out += "\n";
     }
     out += &silent_list(s, &columns);
@@ -117,11 +138,6 @@ fn silent_list(s: &Summary, columns: &[(String, Vec<usize>)]) -> String {
     out + if any { "" } else { "None.\n" }
 }
 
-/// Whether some method was judged against a true curve on case `i`.
-fn has_curve(s: &Summary, i: usize) -> bool {
-    s.data.methods.iter().any(|m| s.run(i, m).is_some_and(|r| r.curve.is_some()))
-}
-
 /// The curve scores of `method` on `cases`; `None` where it did not finish.
 fn scores<'a>(s: &Summary<'a>, cases: &[usize], method: &str) -> Vec<Option<&'a CurveScore>> {
     cases.iter().map(|&i| s.run(i, method).and_then(|r| r.curve.as_ref())).collect()
@@ -135,9 +151,12 @@ fn silent_wrong(scores: &[Option<&CurveScore>]) -> (String, Option<f64>) {
     share(scores.iter().flatten().filter(|c| c.silent_wrong()).count(), scores.len())
 }
 
-fn warned_good(scores: &[Option<&CurveScore>]) -> (String, Option<f64>) {
-    let good: Vec<&&CurveScore> = scores.iter().flatten().filter(|c| c.good()).collect();
-    share(good.iter().filter(|c| c.warned).count(), good.len())
+fn good_silent(scores: &[Option<&CurveScore>]) -> (String, Option<f64>) {
+    share(scores.iter().flatten().filter(|c| c.good_silent()).count(), scores.len())
+}
+
+fn good_warned(scores: &[Option<&CurveScore>]) -> (String, Option<f64>) {
+    share(scores.iter().flatten().filter(|c| c.good_warned()).count(), scores.len())
 }
 
 fn outliers_left_out(scores: &[Option<&CurveScore>]) -> (String, Option<f64>) {

@@ -6,6 +6,10 @@ use std::collections::HashMap;
 const CATEGORY_ORDER: [&str; 8] =
     ["manifold", "sharp", "open", "multiple", "noisy", "outliers", "bezier", "large"];
 
+/// The halves of a data folder (`index.csv`'s `half` column) in the order they are shown:
+/// the cases a method was designed on, then those held out to check it.
+const HALF_ORDER: [&str; 2] = ["design", "held-out"];
+
 /// The benchmark data with its entries indexed by (case, method).
 pub(super) struct Summary<'a> {
     pub data: &'a BenchData,
@@ -41,6 +45,43 @@ impl<'a> Summary<'a> {
             present.into_iter().partition(|c| CATEGORY_ORDER.contains(c));
         known.extend(others);
         known.into_iter().map(String::from).collect()
+    }
+
+    /// The halves of the cases (`index.csv`'s `half` column): `design`, `held-out`, then any
+    /// others alphabetically; empty without the column.
+    pub fn halves(&self) -> Vec<String> {
+        let mut present: Vec<&str> = (0..self.data.cases.len())
+            .map(|i| self.data.half(i))
+            .filter(|h| !h.is_empty())
+            .collect();
+        present.sort_by_key(|h| {
+            (HALF_ORDER.iter().position(|o| o == h).unwrap_or(HALF_ORDER.len()), *h)
+        });
+        present.dedup();
+        present.into_iter().map(String::from).collect()
+    }
+
+    /// `columns` (title, cases) with each column shown once per half, side by side: `TITLE ·
+    /// HALF` with the column's cases of that half, `design` first. Unchanged without halves;
+    /// a case without a half is then in no column.
+    pub fn by_half(&self, columns: Vec<(String, Vec<usize>)>) -> Vec<(String, Vec<usize>)> {
+        let halves = self.halves();
+        if halves.is_empty() {
+            return columns;
+        }
+        let mut out = Vec::new();
+        for (title, cases) in columns {
+            for half in &halves {
+                let of_half = cases.iter().copied().filter(|&i| self.data.half(i) == half);
+                out.push((format!("{title} · {half}"), of_half.collect()));
+            }
+        }
+        out
+    }
+
+    /// Whether some method was judged against a true curve on case `case`: the case has one.
+    pub fn has_curve(&self, case: usize) -> bool {
+        self.data.methods.iter().any(|m| self.run(case, m).is_some_and(|r| r.curve.is_some()))
     }
 
     /// The indices of the cases of `category`.

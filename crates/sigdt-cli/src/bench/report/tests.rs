@@ -73,6 +73,7 @@ fn sample() -> BenchData {
             paper_percent: Some(99.9),
         }],
         eps_threshold: 1.0,
+        halves: Vec::new(),
     }
 }
 
@@ -103,6 +104,7 @@ fn writes_every_file() {
     let expected = [
         "report.md",
         "results.csv",
+        "numbers.json",
         "accuracy.svg",
         "accuracy_eps.svg",
         "runtime.svg",
@@ -200,7 +202,7 @@ fn failures_are_listed() {
 fn empty_data_gives_a_report() {
     let (md, names, _) = report(&BenchData::default());
     assert!(md.contains("## Exact reconstruction") && md.contains("Not computed."));
-    assert_eq!(names, ["report.md", "results.csv", "accuracy.svg", "runtime.svg"]);
+    assert_eq!(names, ["report.md", "results.csv", "numbers.json", "accuracy.svg", "runtime.svg"]);
 }
 
 #[test]
@@ -218,15 +220,23 @@ fn runtime_columns_at_the_papers_large_size_and_the_largest() {
 fn judged(iou: f64, topology_right: bool, h: f64, warned: bool) -> Outcome {
     let Outcome::Done(run) = done(false, 1.0, Some(0.01)) else { unreachable!() };
     let left_out = Some(LeftOut { outliers: 4, outliers_left_out: 3, curve_points_left_out: 1 });
-    let curve = CurveScore { iou, topology_right, hausdorff_over_s: Some(h), warned, left_out };
+    let curve = CurveScore {
+        iou,
+        topology_right,
+        hausdorff_over_s: Some(h),
+        hausdorff_bound_over_s: Some(1.0),
+        warned,
+        left_out,
+    };
     Outcome::Done(Run { curve: Some(curve), ..run })
 }
 
-#[test]
-fn results_judged_against_true_curves() {
-    // Beside the sample: three outline cases, two methods and an import. sig-connect2d is
-    // good on two, wrong with a warning on one; crust good but warned on one, wrong silently
-    // on two (one an extra loop at IoU 0.99); the import fails on one and is good on two.
+/// The sample and three outline cases, two methods and an import, judged against their true
+/// curves (clean data: the Hausdorff bound is one spacing). sig-connect2d is good on two,
+/// wrong with a warning on one; crust good but warned on one, wrong silently on two (one an
+/// extra loop at IoU 0.99); the import good on one, a spike out to an outlier on another
+/// (topology right, IoU 0.99, H = 2.5 s: silently wrong), and fails on the third.
+fn judged_sample() -> BenchData {
     let mut data = sample();
     data.methods.push("hull".into());
     for (name, category) in [("a", "outline-clean"), ("b", "outline-clean"), ("c", "outline-noise")]
@@ -244,7 +254,7 @@ fn results_judged_against_true_curves() {
         ),
         (
             "hull",
-            [(0.97, true, 2.0, false), (0.96, true, 2.5, false), (f64::NAN, false, 0.0, false)],
+            [(0.97, true, 0.8, false), (0.99, true, 2.5, false), (f64::NAN, false, 0.0, false)],
         ),
     ];
     for (method, runs) in outcomes {
@@ -257,6 +267,18 @@ fn results_judged_against_true_curves() {
             data.entries.push(Entry { case: 6 + k, method: method.into(), outcome });
         }
     }
+    data
+}
+
+/// The table under `### TITLE` in `section`.
+fn table_of(section: &str, title: &str) -> String {
+    let start = section.find(&format!("### {title}\n")).unwrap_or_else(|| panic!("{title}"));
+    section[start..].split("\n\n").nth(1).unwrap().to_string()
+}
+
+#[test]
+fn results_judged_against_true_curves() {
+    let data = judged_sample();
     let (md, _, dir) = report(&data);
     let (exact, section, paper) = (
         md.find("## Exact reconstruction").unwrap(),
@@ -266,43 +288,142 @@ fn results_judged_against_true_curves() {
     assert!(exact < section && section < paper, "the exact table first, then this");
     let section = &md[section..paper];
     assert!(section.contains("The 3 cases that carry their true curve"), "{section}");
-    let table = |title: &str| {
-        let start = section.find(&format!("### {title}\n")).unwrap();
-        section[start..].split("\n\n").nth(1).unwrap().to_string()
-    };
+    assert!(section.contains("and H ≤ s + d<sub>max</sub>"), "{section}");
+    assert!(!section.contains("half"), "no halves: {section}");
+    let table = |title: &str| table_of(section, title);
     let good = table("Good");
     assert!(good.starts_with("| Method | outline-clean | outline-noise |"), "{good}");
     assert!(good.contains("| `sig-connect2d` | **100.0 % (2/2)** | 0.0 % (0/1) |"), "{good}");
     assert!(good.contains("| `crust` | 50.0 % (1/2) | 0.0 % (0/1) |"), "{good}");
-    assert!(good.contains("| `hull` | **100.0 % (2/2)** | 0.0 % (0/1) |"), "{good}");
+    assert!(good.contains("| `hull` | 50.0 % (1/2) | 0.0 % (0/1) |"), "the spike: {good}");
+    let quiet = table("Good, no warning");
+    assert!(quiet.contains("| `sig-connect2d` | **100.0 % (2/2)** | 0.0 % (0/1) |"), "{quiet}");
+    assert!(quiet.contains("| `crust` | 0.0 % (0/2) |"), "{quiet}");
+    assert!(quiet.contains("| `hull` | 50.0 % (1/2) |"), "{quiet}");
+    let alarms = table("Good but warned");
+    assert!(alarms.contains("| `crust` | 50.0 % (1/2) | 0.0 % (0/1) |"), "{alarms}");
+    assert!(alarms.contains("| `hull` | **0.0 % (0/2)** | 0.0 % (0/1) |"), "{alarms}");
     let silent = table("Silent wrong");
     assert!(silent.contains("| `crust` | 50.0 % (1/2) | 100.0 % (1/1) |"), "{silent}");
-    assert!(silent.contains("| `hull` | **0.0 % (0/2)** | **0.0 % (0/1)** |"), "{silent}");
-    let alarms = table("Warned while good");
-    assert!(alarms.contains("| `crust` | 100.0 % (1/1) | – |"), "{alarms}");
+    assert!(silent.contains("| `hull` | 50.0 % (1/2) | **0.0 % (0/1)** |"), "{silent}");
     let iou = table("Median IoU");
     assert!(iou.contains("| `sig-connect2d` | **0.994** | **0.500** |"), "{iou}");
-    assert!(iou.contains("| `hull` | 0.965 | – |"), "{iou}");
+    assert!(iou.contains("| `hull` | 0.980 | – |"), "{iou}");
     let h = table("Median H/s");
     assert!(h.contains("| `crust` | 0.35 | ∞ |"), "{h}");
     let list = &section[section.find("### Silent wrong cases").unwrap()..];
     assert!(list.contains("- `crust` (2): `b` (IoU 0.990, topology wrong, manifold), `c` (IoU"));
-    assert!(!list.contains("`sig-connect2d` (") && !list.contains("`hull` ("), "{list}");
+    assert!(list.contains("- `hull` (1): `b` (IoU 0.990, topology right, manifold)"), "{list}");
+    assert!(!list.contains("`sig-connect2d` ("), "{list}");
     // The columns in results.csv: filled for the judged runs only, read back the same.
     let csv = fs::read_to_string(dir.path().join("out/results.csv")).unwrap();
-    assert!(csv
-        .lines()
-        .next()
-        .unwrap()
-        .ends_with(",good,silent_wrong,outliers,outliers_left_out,curve_points_left_out"));
+    assert!(csv.lines().next().unwrap().ends_with(
+        ",good,silent_wrong,outliers,outliers_left_out,curve_points_left_out,\
+         hausdorff_bound_over_s,half"
+    ));
     assert!(csv.contains("\nb,outline-clean,100,,,crust,ok,0,manifold,"), "{csv}");
-    assert!(csv.contains(",0.99,0,0.4,0,0,1,4,3,1\n"), "{csv}");
-    assert!(csv.contains(",0.2,1,inf,0,0,1,4,3,1\n"), "{csv}");
-    assert!(csv.lines().filter(|l| l.ends_with(",,,,,,,,,")).count() == 12 + 1, "{csv}");
+    assert!(csv.contains(",0.99,0,0.4,0,0,1,4,3,1,1,\n"), "{csv}");
+    assert!(csv.contains(",0.2,1,inf,0,0,1,4,3,1,1,\n"), "{csv}");
+    assert!(csv.contains(",0.99,1,2.5,0,0,1,4,3,1,1,\n"), "the spike: {csv}");
+    assert!(csv.lines().filter(|l| l.ends_with(",,,,,,,,,,,")).count() == 12 + 1, "{csv}");
     // Every judged run left out 3 of its 4 outliers and 1 curve point.
     let outliers = table("Outliers left out");
     assert!(outliers.contains("| `crust` | 75.0 % (6/8) | 75.0 % (3/4) |"), "{outliers}");
     let curve_points = table("Curve points left out");
     assert!(curve_points.contains("| `hull` | 2 in 2 case(s) | – |"), "{curve_points}");
     assert_eq!(read_results_csv(csv.as_bytes()).unwrap().entries, data.entries);
+}
+
+/// The rows of `numbers.json` in `dir`, after checking that it is JSON of the data folder.
+fn numbers(dir: &tempfile::TempDir) -> Vec<serde_json::Value> {
+    let text = fs::read_to_string(dir.path().join("out/numbers.json")).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(json["folder"], "/data/curves");
+    assert!(!text.contains('%') && !text.contains("time"), "counts only: {text}");
+    json["rows"].as_array().unwrap().clone()
+}
+
+/// The row of `numbers` for (method, category, half).
+fn numbers_row<'a>(
+    rows: &'a [serde_json::Value],
+    method: &str,
+    category: &str,
+    half: &str,
+) -> &'a serde_json::Value {
+    let key = |r: &&serde_json::Value| {
+        r["method"] == method && r["category"] == category && r["half"] == half
+    };
+    rows.iter().find(key).unwrap_or_else(|| panic!("no row {method} {category} {half}"))
+}
+
+#[test]
+fn numbers_json_holds_the_counts() {
+    let (_, _, dir) = report(&judged_sample());
+    let rows = numbers(&dir);
+    // 3 methods × (5 categories + all) × the half "all".
+    assert_eq!(rows.len(), 3 * 6);
+    let first: Vec<&str> = rows[..6].iter().map(|r| r["category"].as_str().unwrap()).collect();
+    assert_eq!(first, ["manifold", "sharp", "open", "outline-clean", "outline-noise", "all"]);
+    let fields: Vec<&String> = rows[0].as_object().unwrap().keys().collect();
+    assert_eq!(fields.len(), 15, "{fields:?}");
+    let sig = numbers_row(&rows, "sig-connect2d", "outline-clean", "all");
+    let expected = serde_json::json!({
+        "method": "sig-connect2d", "category": "outline-clean", "half": "all", "cases": 2,
+        "exact": 0, "judged": 2, "good": 2, "good_silent": 2, "good_warned": 0,
+        "silent_wrong": 0, "warned": 0, "outliers": 8, "outliers_left_out": 6,
+        "clean_points_left_out": 2, "cases_with_clean_points_left_out": 2
+    });
+    assert_eq!(sig, &expected);
+    // The failed import: two runs counted, none good (one a spike), one silent.
+    let hull = numbers_row(&rows, "hull", "all", "all");
+    assert_eq!((hull["cases"].as_u64(), hull["judged"].as_u64()), (Some(9), Some(3)));
+    assert_eq!((hull["good"].as_u64(), hull["silent_wrong"].as_u64()), (Some(1), Some(1)));
+    assert_eq!(hull["outliers"].as_u64(), Some(8));
+    // Without a true curve: only cases and exact.
+    let crust = numbers_row(&rows, "crust", "manifold", "all");
+    assert_eq!((crust["cases"].as_u64(), crust["exact"].as_u64()), (Some(3), Some(1)));
+    assert!(crust["judged"] == 0 && crust["good"].is_null() && crust["outliers"].is_null());
+}
+
+#[test]
+fn halves_are_shown_side_by_side() {
+    let mut data = judged_sample();
+    // m1 m2 m3 s1 s2 o1 a b c: a case of each category in each half, but the noisy one.
+    let halves = ["design", "held-out", "design", "held-out", "design", "held-out"];
+    data.halves =
+        halves.iter().chain(&["held-out", "design", "design"]).map(|h| h.to_string()).collect();
+    let (md, _, dir) = report(&data);
+    let header = row(&md, "| Method | manifold · design | manifold · held-out | sharp · design |");
+    assert!(header.contains("| manifold ε < 1 · design | manifold ε < 1 · held-out |"), "{header}");
+    // Manifold: sig-connect2d exact on m1 (design) and m2 (held-out), not m3 (design);
+    // crust on m1 only.
+    let sig = row(&md, "| `sig-connect2d` |");
+    assert!(sig.starts_with("| `sig-connect2d` | **50.0 % (1/2)** | **100.0 % (1/1)** |"), "{sig}");
+    assert!(row(&md, "| `crust` |").starts_with("| `crust` | **50.0 % (1/2)** | 0.0 % (0/1) |"));
+    assert!(md.contains("side by side: `· design`, `· held-out`."), "{md}");
+    let section = &md[md.find("## Judged against the true curve").unwrap()..];
+    let good = table_of(section, "Good");
+    assert!(
+        good.starts_with(
+            "| Method | outline-clean · design | outline-clean · held-out | \
+             outline-noise · design | outline-noise · held-out |"
+        ),
+        "{good}"
+    );
+    // a is held-out, b design: the spike of the import is in the design half.
+    assert!(good.contains("| `hull` | 0.0 % (0/1) | 100.0 % (1/1) | 0.0 % (0/1) | – |"), "{good}");
+    assert!(section.contains("`CATEGORY · design`, `CATEGORY · held-out`"), "{section}");
+    // results.csv names the half of each row; numbers.json has a row per half.
+    let csv = fs::read_to_string(dir.path().join("out/results.csv")).unwrap();
+    assert!(csv.lines().any(|l| l.starts_with("a,outline-clean,") && l.ends_with(",held-out")));
+    assert_eq!(read_results_csv(csv.as_bytes()).unwrap().halves, data.halves);
+    let rows = numbers(&dir);
+    assert_eq!(rows.len(), 3 * 6 * 3);
+    let halves: Vec<&str> = rows[..3].iter().map(|r| r["half"].as_str().unwrap()).collect();
+    assert_eq!(halves, ["all", "design", "held-out"]);
+    let design = numbers_row(&rows, "hull", "outline-clean", "design");
+    assert_eq!((design["cases"].as_u64(), design["good"].as_u64()), (Some(1), Some(0)));
+    assert_eq!(design["silent_wrong"].as_u64(), Some(1));
+    let held_out = numbers_row(&rows, "hull", "outline-noise", "held-out");
+    assert!(held_out["cases"] == 0 && held_out["good"].is_null());
 }

@@ -1,13 +1,14 @@
 //! `write_report`: the Markdown report, the per-case CSV and the charts of a benchmark run.
 use super::summary::{inline, table, Summary};
-use super::{charts, curve, exact, sections};
+use super::{charts, curve, exact, numbers, sections};
 use crate::bench::record::{write_results_csv, BenchData};
 use std::fs;
 use std::io;
 use std::path::{Path, PathBuf};
 
 /// Writes the report of `data` into `out_dir` (created if needed) and returns the paths
-/// written: `report.md`, `results.csv`, `accuracy.svg`, `accuracy_eps.svg` (only when the
+/// written: `report.md`, `results.csv`, `numbers.json` (the report's counts, for programs),
+/// `accuracy.svg`, `accuracy_eps.svg` (only when the
 /// manifold cases have an ε in `index.csv`), `runtime.svg` and `symdiff_CATEGORY.svg` for
 /// each of the open, multiple and non-manifold categories present.
 ///
@@ -60,6 +61,7 @@ pub fn write_report(data: &BenchData, out_dir: &Path) -> io::Result<Vec<PathBuf>
     let mut csv = Vec::new();
     write_results_csv(data, &mut csv)?;
     save("results.csv", &csv)?;
+    save("numbers.json", numbers::numbers_json(&s).as_bytes())?;
     save("accuracy.svg", charts::accuracy(&s).as_bytes())?;
     if let Some(svg) = eps_chart {
         save("accuracy_eps.svg", svg.as_bytes())?;
