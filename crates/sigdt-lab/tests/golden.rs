@@ -3,9 +3,11 @@
 //!
 //! - every result keeps the output invariants;
 //! - the cases it reconstructs exactly are the ones listed in `data/golden/FOLDER/RUN.exact`,
-//!   case by case, so that a regression cannot hide behind another case's improvement. A
-//!   change prints the cases lost and gained; `UPDATE_GOLDEN=1` rewrites the lists, and the
-//!   diff is reviewed like code;
+//!   case by case, so that a regression cannot hide behind another case's improvement. The
+//!   list is a ratchet ([`check_golden`]): a case lost fails, with or without
+//!   `UPDATE_GOLDEN=1`, until `data/golden/FOLDER/RUN.lost` says why (a line `CASE  reason`);
+//!   `UPDATE_GOLDEN=1` then rewrites the list (gains added, reviewed losses removed), and
+//!   the diff is reviewed like code;
 //! - on `data/curves`, the exact count per category stays at or above its floor (what was
 //!   reached, rounded down; never lowered without saying why in the commit).
 use sigdt::internals::check_reconstruction;
@@ -150,12 +152,22 @@ fn check_floors(run: &Run, floors: &[(&str, usize)], label: &str) {
     }
 }
 
-/// Compares the exact cases of `run` with `data/golden/FOLDER/NAME.exact`.
+/// Compares the exact cases of `run` with `data/golden/FOLDER/NAME.exact`, a ratchet:
+///
+/// - a case lost (in the list, not exact in the run) fails, with or without
+///   `UPDATE_GOLDEN=1`, unless `NAME.lost` beside the list gives its reason: lines
+///   `CASE  reason text`, `#` comments and blank lines allowed; a line without a reason
+///   fails, as does a case listed twice;
+/// - a `.lost` line for a case that is exact in the run fails too (a stale reason: delete
+///   the line);
+/// - without `UPDATE_GOLDEN`, a gain or a reviewed loss fails (the list is out of date);
+///   with it, the list is rewritten as the run's exact cases, and `.lost` keeps the reasons.
+///
+/// Nothing is written while anything fails.
 fn check_golden(run: &Run, folder: &str, name: &str) {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../data/golden")
-        .join(folder)
-        .join(format!("{name}.exact"));
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data/golden").join(folder);
+    let (path, lost_path) = (dir.join(format!("{name}.exact")), dir.join(format!("{name}.lost")));
+    let shown = format!("data/golden/{folder}/{name}");
     let text = |set: &BTreeSet<String>| {
         let mut text = format!(
             "# Cases of data/{folder} that {name} reconstructs exactly ({} of them); checked \
@@ -165,29 +177,162 @@ fn check_golden(run: &Run, folder: &str, name: &str) {
         set.iter().for_each(|n| text += &format!("{n}\n"));
         text
     };
-    if std::env::var_os("UPDATE_GOLDEN").is_some() {
-        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-        std::fs::write(&path, text(&run.exact)).unwrap();
-        return;
+    let update = std::env::var_os("UPDATE_GOLDEN").is_some();
+    let stored = match std::fs::read_to_string(&path) {
+        Ok(stored) => names(&stored),
+        Err(_) if update => BTreeSet::new(),
+        Err(e) => panic!("{shown}.exact: {e} (UPDATE_GOLDEN=1 writes it)"),
+    };
+    let reasons = match std::fs::read_to_string(&lost_path) {
+        Ok(text) => read_lost(&text).unwrap_or_else(|e| panic!("{shown}.lost:{e}")),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => BTreeMap::new(),
+        Err(e) => panic!("{shown}.lost: {e}"),
+    };
+    let ratchet = Ratchet::new(&stored, &reasons, &run.exact);
+    if let Some(failure) = ratchet.failure(&format!("data/{folder}"), &shown, update) {
+        panic!("{failure}");
     }
-    let stored = std::fs::read_to_string(&path)
-        .unwrap_or_else(|e| panic!("{}: {e} (UPDATE_GOLDEN=1 writes it)", path.display()));
-    let expected: BTreeSet<String> = stored
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+    if update && std::fs::read_to_string(&path).ok() != Some(text(&run.exact)) {
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(&path, text(&run.exact)).unwrap();
+    }
+}
+
+/// The case names of a golden list: its lines but `#` comments and blank lines.
+fn names(list: &str) -> BTreeSet<String> {
+    list.lines()
+        .map(str::trim)
+        .filter(|l| !l.starts_with('#') && !l.is_empty())
         .map(str::to_string)
-        .collect();
-    let lost: Vec<_> = expected.difference(&run.exact).collect();
-    let gained: Vec<_> = run.exact.difference(&expected).collect();
-    assert!(
-        lost.is_empty() && gained.is_empty(),
-        "{folder}/{name}: the exact cases changed.\n  lost ({}): {lost:?}\n  gained ({}): \
-         {gained:?}\nIf the change is intended, rerun with UPDATE_GOLDEN=1 and review the \
-         diff of {}.",
-        lost.len(),
-        gained.len(),
-        path.display()
-    );
+        .collect()
+}
+
+/// The reasons of a `.lost` file, by case; an error names the line.
+fn read_lost(text: &str) -> Result<BTreeMap<String, String>, String> {
+    let mut reasons = BTreeMap::new();
+    for (k, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.starts_with('#') || line.is_empty() {
+            continue;
+        }
+        let (case, reason) = line.split_once(char::is_whitespace).unwrap_or((line, ""));
+        if reason.trim().is_empty() {
+            return Err(format!(
+                "{}: '{case}' has no reason; write 'CASE  why it was lost'",
+                k + 1
+            ));
+        }
+        if reasons.insert(case.to_string(), reason.trim().to_string()).is_some() {
+            return Err(format!("{}: '{case}' is listed twice", k + 1));
+        }
+    }
+    Ok(reasons)
+}
+
+/// What a run does to a golden list and its `.lost` reasons.
+#[derive(Debug, Default, PartialEq)]
+struct Ratchet {
+    /// In the list, not exact in the run, no reason given: always fails.
+    unexplained: Vec<String>,
+    /// Given a reason, yet exact in the run: always fails.
+    stale: Vec<String>,
+    /// In the list, not exact in the run, with a reason: `UPDATE_GOLDEN=1` removes them.
+    reviewed: Vec<String>,
+    /// Exact in the run, not in the list: `UPDATE_GOLDEN=1` adds them.
+    gained: Vec<String>,
+}
+
+impl Ratchet {
+    fn new(
+        stored: &BTreeSet<String>,
+        reasons: &BTreeMap<String, String>,
+        exact: &BTreeSet<String>,
+    ) -> Ratchet {
+        let (reviewed, unexplained) =
+            stored.difference(exact).cloned().partition(|c| reasons.contains_key(c));
+        Ratchet {
+            unexplained,
+            stale: reasons.keys().filter(|c| exact.contains(*c)).cloned().collect(),
+            reviewed,
+            gained: exact.difference(stored).cloned().collect(),
+        }
+    }
+
+    /// The failure message, if any, of the list `SHOWN.exact` of `folder`.
+    fn failure(&self, folder: &str, shown: &str, update: bool) -> Option<String> {
+        let mut message = String::new();
+        if !self.unexplained.is_empty() {
+            message += &format!(
+                "{shown}: {} case(s) of {folder} no longer exact, with no reason given.\n  If \
+                 the loss is accepted, write why in {shown}.lost, one line per case:\n{}  then \
+                 rerun with UPDATE_GOLDEN=1 to remove them from {shown}.exact.\n",
+                self.unexplained.len(),
+                self.unexplained.iter().map(|c| format!("    {c}  <reason>\n")).collect::<String>()
+            );
+        }
+        if !self.stale.is_empty() {
+            message += &format!(
+                "{shown}.lost: {} case(s) exact again, so their reason is stale: {}\n  Delete \
+                 their lines from {shown}.lost.\n",
+                self.stale.len(),
+                self.stale.join(", ")
+            );
+        }
+        let out_of_date = !(self.reviewed.is_empty() && self.gained.is_empty());
+        if message.is_empty() && (update || !out_of_date) {
+            return None;
+        }
+        if out_of_date {
+            message += &format!(
+                "{shown}.exact is out of date:\n  gained ({}): {:?}\n  lost, with a reason in \
+                 {shown}.lost ({}): {:?}\n  {}\n",
+                self.gained.len(),
+                self.gained,
+                self.reviewed.len(),
+                self.reviewed,
+                if message.is_empty() {
+                    "If the change is intended, rerun with UPDATE_GOLDEN=1 and review the diff."
+                } else {
+                    "UPDATE_GOLDEN=1 rewrites it once the failures above are fixed."
+                }
+            );
+        }
+        Some(message)
+    }
+}
+
+#[test]
+fn golden_ratchet_rules() {
+    let set = |names: &[&str]| names.iter().map(|n| n.to_string()).collect::<BTreeSet<_>>();
+    let stored = set(&["a", "b", "c"]);
+    let none = BTreeMap::new();
+    let failure = |reasons: &BTreeMap<String, String>, exact: &[&str], update: bool| {
+        Ratchet::new(&stored, reasons, &set(exact)).failure("data/x", "data/golden/x/m", update)
+    };
+    // Unchanged: passes either way.
+    assert_eq!(failure(&none, &["a", "b", "c"], false), None);
+    assert_eq!(failure(&none, &["a", "b", "c"], true), None);
+    // A gain fails without UPDATE_GOLDEN only.
+    assert!(failure(&none, &["a", "b", "c", "d"], false).unwrap().contains("gained (1)"));
+    assert_eq!(failure(&none, &["a", "b", "c", "d"], true), None);
+    // A loss without a reason fails either way, naming the .lost file.
+    for update in [false, true] {
+        let message = failure(&none, &["a", "c", "d"], update).unwrap();
+        assert!(message.contains("no reason given") && message.contains("    b  <reason>\n"));
+        assert!(message.contains("data/golden/x/m.lost"), "{message}");
+    }
+    // With a reason, the loss fails without UPDATE_GOLDEN (the list is out of date) only.
+    let reasons = read_lost("# reviewed losses\n\nb   the new rule splits it\n").unwrap();
+    assert!(failure(&reasons, &["a", "c"], false).unwrap().contains("out of date"));
+    assert_eq!(failure(&reasons, &["a", "c"], true), None);
+    // A reason for a case exact again is stale, either way.
+    for update in [false, true] {
+        assert!(failure(&reasons, &["a", "b", "c"], update).unwrap().contains("stale: b"));
+    }
+    // The .lost file: every case needs a reason, once.
+    assert!(read_lost("b\n").unwrap_err().starts_with("1: 'b' has no reason"));
+    assert!(read_lost("# x\nb   \t\n").unwrap_err().starts_with("2: 'b' has no reason"));
+    assert!(read_lost("b why\nb why not\n").unwrap_err().contains("listed twice"));
 }
 
 /// The methods and option sets that have golden lists, with their file names.
