@@ -77,7 +77,7 @@ pub(super) fn coarse_reading(
         return None;
     }
     // A coarse reading is used only when it is closed curves.
-    let inner = Steps { coarse: false, junctions: false, ..*steps };
+    let inner = Steps { coarse: false, junctions: false, candidates: false, ..*steps };
     let order = hilbert_order(|v| dt.point(v), dt.num_vertices());
     for factor in THINNING {
         let radius = factor * spacing;

@@ -94,6 +94,7 @@
 //! O(n log n) time per round, O(n) memory, on curve input.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
+mod candidates;
 mod chain_join;
 mod closed_component;
 mod coarse_reading;
@@ -167,9 +168,13 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
         true => with_skipped_samples(dt, rec),
         false => rec,
     };
-    match networks.and_then(|networks| network_reading(dt, &rec, &networks)) {
+    let rec = match networks.and_then(|networks| network_reading(dt, &rec, &networks)) {
         Some(network) => network,
         None => rec,
+    };
+    match steps.candidates {
+        true => candidates::best_reading(dt, rec),
+        false => rec,
     }
 }
 

@@ -42,6 +42,9 @@ pub struct Steps {
     /// Read junctions where the reading breaks and straight pairs of SIGDT edges meet
     /// (`junctions`, step 8).
     pub junctions: bool,
+    /// Where the checked reading breaks the sampling or leaves curves open, weigh it against
+    /// the polygons of SIG-CONNECT2D and CONNECT2D by one measure (`candidates`).
+    pub candidates: bool,
 }
 
 impl Default for Steps {
@@ -60,6 +63,7 @@ impl Default for Steps {
             wired_outliers: true,
             skipped_samples: true,
             junctions: true,
+            candidates: true,
         }
     }
 }
