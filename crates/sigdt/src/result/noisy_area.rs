@@ -114,18 +114,37 @@ fn canonical(dt: &Triangulation, ring: &[u32]) -> Vec<u32> {
     (0..n).map(at).collect()
 }
 
-/// How many vertices of the closed `ring` turn the other way than the vertex before them
-/// (exact orientations; a straight vertex reverses nothing).
+/// How many ulps of its largest coordinate a vertex may lie off the line through its
+/// neighbours and still count as straight: samples placed on a straight side by
+/// interpolation (`shapely.segmentize`, densified GIS lines) are off it by a few roundings,
+/// with either sign, and would otherwise read as turns that reverse at random, like noise.
+/// No sampled curve or noise turns by so little: 64 ulps is 1.4·10⁻¹⁴ of the coordinates.
+pub const ROUNDING_ULPS: f64 = 64.0;
+
+/// How many vertices of the closed `ring` turn the other way than the last vertex that
+/// turned (exact orientations; a straight vertex, or one within [`ROUNDING_ULPS`] of
+/// straight, reverses nothing and is passed over).
 fn reversals(dt: &Triangulation, ring: &[u32]) -> usize {
     let n = ring.len();
     let at = |k: usize| dt.point(ring[k % n]);
-    let turn = |k: usize| orient2d(at(k + n - 1), at(k), at(k + 1)).signum();
-    let mut before = turn(n - 1);
+    let turn = |k: usize| {
+        let (u, v, w) = (at(k + n - 1), at(k), at(k + 1));
+        let side = orient2d(u, v, w);
+        let scale = [u, v, w].iter().flatten().fold(0.0f64, |m, c| m.max(c.abs()));
+        // |side| / |uw| is how far v lies off the line uw.
+        match side.abs() <= ROUNDING_ULPS * f64::EPSILON * scale * distance(u, w) {
+            true => 0.0,
+            false => side.signum(),
+        }
+    };
+    let mut before = (1..=n).map(|k| turn(n - k)).find(|&t| t != 0.0).unwrap_or(0.0);
     let mut count = 0;
     for k in 0..n {
         let now = turn(k);
-        count += usize::from(before * now < 0.0);
-        before = now;
+        if now != 0.0 {
+            count += usize::from(before * now < 0.0);
+            before = now;
+        }
     }
     count
 }
@@ -222,6 +241,41 @@ mod tests {
         for n in [7, 12, 40, 1000] {
             assert_eq!(finding(&noisy_circle(n, 0.0, 1)), None, "{n} points");
         }
+    }
+
+    #[test]
+    fn samples_interpolated_on_straight_sides_do_not_reverse() {
+        // A jagged polygon of 24 corners whose sides are densified by interpolation, as
+        // `shapely.segmentize` does: the samples lie off their sides by roundings, with either
+        // sign. They turn nowhere; only the corners do, and those alternate at most half the
+        // time by construction (every second corner juts out).
+        let corners: Vec<Point> = (0..24)
+            .map(|k| {
+                let (a, r) = (TAU * k as f64 / 24.0 + 0.1, if k % 2 == 0 { 1000.3 } else { 900.7 });
+                [r * a.cos() + 3.1e5, r * a.sin() - 7.7e4]
+            })
+            .collect();
+        let mut points = Vec::new();
+        for (k, &a) in corners.iter().enumerate() {
+            let b = corners[(k + 1) % 24];
+            points.extend(
+                (0..10)
+                    .map(|j| j as f64 / 10.0)
+                    .map(|t| [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]),
+            );
+        }
+        let dt = Triangulation::new(&points).unwrap();
+        let vertex_of = dt.vertex_of_inputs();
+        let ring: Vec<u32> = vertex_of.clone();
+        assert_eq!(reversals(&dt, &ring), 24, "every corner turns against the last");
+        let on_sides = (0..points.len()).filter(|k| k % 10 != 0).map(|k| vertex_of[k]);
+        let turns = on_sides.filter(|&v| {
+            let k = ring.iter().position(|&w| w == v).unwrap();
+            let n = ring.len();
+            orient2d(dt.point(ring[(k + n - 1) % n]), dt.point(v), dt.point(ring[(k + 1) % n]))
+                != 0.0
+        });
+        assert!(turns.count() > 0, "the test needs samples off their sides by roundings");
     }
 
     #[test]

@@ -95,6 +95,9 @@ pub const LONG_EDGE_RATIO: f64 = 4.0;
 /// (module docs, property 3).
 pub const MIN_LOOP_POINTS: usize = 7;
 
+/// The cosine of the largest turn of a curve sampled with ε < 1 at a sample (60°).
+const SAMPLED_TURN_COS: f64 = 0.5;
+
 /// The cosine of the turn beyond which a reading doubles back (150°).
 const DOUBLING_BACK_COS: f64 = -0.866_025_403_784_438_6;
 
@@ -380,8 +383,17 @@ fn doubling_back_with(
             continue;
         }
         let far =
-            |w: u32| distance(dt.point(v), dt.point(w)) >= LONG_EDGE_RATIO * spacing.at(dt, w);
-        if far(a) && far(b) {
+            |w: u32, ratio: f64| distance(dt.point(v), dt.point(w)) >= ratio * spacing.at(dt, w);
+        // A point whose own spacing is twice its neighbours' on both sides, reached by turns
+        // sharper than a sampled curve's (60°, ε < 1) at both, is no corner of the curve
+        // (whose sides run on straight) but a point the reading goes out to: edges beyond
+        // the bound `u < 2` itself, not twice it, make it a wired point.
+        let isolated = spacing.at(dt, v) >= DEPTH_RATIO * spacing.at(dt, a).max(spacing.at(dt, b))
+            && (closed || (k >= 2 && k + 2 < n))
+            && (turn_cos(dt, curve[(k + n - 2) % n], a, v) < SAMPLED_TURN_COS
+                || turn_cos(dt, v, b, curve[(k + 2) % n]) < SAMPLED_TURN_COS);
+        let ratio = if isolated { DEPTH_RATIO } else { LONG_EDGE_RATIO };
+        if far(a, ratio) && far(b, ratio) {
             found.push((k, cos.acos().to_degrees()));
         }
     }
@@ -736,6 +748,45 @@ mod tests {
         let back = found.iter().find(|f| f.kind == FindingKind::DoublesBack).unwrap();
         assert_eq!((back.count, back.at), (1, 60));
         assert!(back.worst > 150.0);
+    }
+
+    #[test]
+    fn an_outlier_wired_in_two_and_a_half_spacings_off_doubles_back() {
+        // Its edges are 2.5 spacings long, under twice the bound, but the point is 2.5 times
+        // as sparse as both its neighbours, and the reading turns 90° at them to reach it.
+        let mut points = circle(60);
+        let half = TAU / 120.0;
+        points.push([1.26 * half.cos(), 1.26 * half.sin()]);
+        let mut order: Vec<usize> = (0..60).collect();
+        order.insert(1, 60);
+        let found = findings(&points, vec![order]);
+        let back = found.iter().find(|f| f.kind == FindingKind::DoublesBack);
+        assert_eq!(back.map(|f| (f.count, f.at)), Some((1, 60)), "{found:?}");
+    }
+
+    #[test]
+    fn a_sparse_sharp_tip_between_straight_sides_does_not_double_back() {
+        // A triangle with a 20° tip three times as sparse as its sides: the reading turns
+        // 160° there, between edges of three spacings, but runs on straight at both
+        // neighbours: a corner of the curve.
+        let side = |angle: f64| -> Vec<Point> {
+            (0..28)
+                .map(|k| 0.3 + 0.1 * k as f64)
+                .map(|t| [t * angle.cos(), t * angle.sin()])
+                .collect()
+        };
+        let (upper, lower) = (side(10f64.to_radians()), side(-10f64.to_radians()));
+        let (top, bottom) = (upper[27], lower[27]);
+        let base: Vec<Point> = (1..10)
+            .map(|k| k as f64 / 10.0)
+            .map(|t| [top[0], top[1] + t * (bottom[1] - top[1])])
+            .collect();
+        let mut points = vec![[0.0, 0.0]];
+        points.extend(&upper);
+        points.extend(&base);
+        points.extend(lower.iter().rev());
+        let found = findings(&points, vec![(0..points.len()).collect()]);
+        assert!(!kinds(&found).contains(&FindingKind::DoublesBack), "{found:?}");
     }
 
     /// `n` points on a small circle far from a circle of 40, read as the two loops.
