@@ -30,8 +30,8 @@
 //! (O(n log n) each) and their checks.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
-//! [OM13]: https://doi.org/10.1111/cgf.12162
-//! [Gie99]: https://doi.org/10.1145/304893.304988
+//! [OM13]: https://doi.org/10.1111/cgf.12227
+//! [Gie99]: https://doi.org/10.1145/304893.304971
 use crate::baselines::connect2d::connect2d_on;
 use crate::delaunay::{Shape, Triangulation};
 use crate::geometry::{distance, Point};
@@ -87,7 +87,14 @@ pub(crate) fn best_reading(dt: &Triangulation, rec: Reconstruction) -> Reconstru
     {
         return rec;
     }
-    let points: Vec<Point> = dt.vertex_of_inputs().iter().map(|&v| dt.point(v)).collect();
+    // Every input point, duplicates as their representatives (which stand for them in the
+    // result).
+    let vertex_of = dt.vertex_of_inputs();
+    let at = |v: u32| if v == u32::MAX { [0.0; 2] } else { dt.point(v) };
+    let mut points: Vec<Point> = vertex_of.iter().map(|&v| at(v)).collect();
+    for &[duplicate, representative] in dt.duplicates() {
+        points[duplicate] = points[representative];
+    }
     let points = points.as_slice();
     let mut best_misfit = Misfit::of(points, &rec);
     let own_uniformity = worst_uniformity(points, &rec.loops, &rec.paths, None);
@@ -202,6 +209,19 @@ mod tests {
         check_reconstruction(&points, &rec).unwrap();
         assert_eq!(rec.status, Status::Polygon);
         assert_eq!(rec.edges, truth);
+    }
+
+    #[test]
+    fn duplicate_points_are_read_through_their_representatives() {
+        // Found by the Python property test: a duplicate has no vertex of its own, and the
+        // candidates looked its point up by vertex (index u32::MAX).
+        for points in [
+            vec![[2.0, 0.0], [0.0, 0.0], [0.0, 0.0], [0.0, 1.0]],
+            vec![[0.0, 0.0], [3.0, 0.0], [3.0, 0.1], [0.0, 0.0], [1.0, 2.0], [3.0, 0.0]],
+        ] {
+            let rec = sig_auto_on(&Triangulation::new(&points).unwrap());
+            check_reconstruction(&points, &rec).unwrap();
+        }
     }
 
     #[test]
