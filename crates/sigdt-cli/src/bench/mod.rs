@@ -7,7 +7,6 @@
 //! - `suite`: a whole run, from the cases to the report's data;
 //! - `runner` and `worker`: one worker process per (case, method), with a time limit;
 //! - `overlap`: proximity-graph statistics and the graph-based ε of the labelled sets;
-//! - `stray`: how far a case's labelled points stray from its true curve;
 //! - `record`, `report`, `chart`: the results, the report (with `numbers.json`) and its
 //!   charts.
 
@@ -18,6 +17,5 @@ pub mod overlap;
 pub mod record;
 pub mod report;
 pub mod runner;
-mod stray;
 pub mod suite;
 pub mod worker;

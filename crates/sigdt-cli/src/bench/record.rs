@@ -65,7 +65,7 @@ pub struct CurveScore {
     pub hausdorff_over_s: Option<f64>,
     /// The most [`hausdorff_over_s`](Self::hausdorff_over_s) of a good result: 1 + d_max / s,
     /// where d_max is the largest distance from a labelled point (one on some ground-truth
-    /// edge) to the true curve (`bench::stray`): 1 on clean data, more on noisy data, where
+    /// edge) to the true curve (`sigdt_lab::eval::stray`): 1 on clean data, more on noisy data, where
     /// the input points themselves stray that far. `None` when the case gives no spacing (or
     /// in a `results.csv` written before it): then no result is good.
     pub hausdorff_bound_over_s: Option<f64>,

@@ -12,7 +12,6 @@ use sigdt::{Edge, Options, Point};
 use sigdt_lab::dataset::CaseFiles;
 
 use super::record::{CurveScore, LeftOut, Run};
-use super::stray;
 
 /// How often to run the method for timing: once to warm up, then `repeat` times (fewer
 /// when one run takes long), reporting the median.
@@ -149,7 +148,7 @@ pub struct Truth {
     /// distance to the curve (else the median ground-truth edge length).
     pub spacing: Option<f64>,
     /// `d_max`: how far the labelled input points stray from the curve at most
-    /// ([`stray::stray`]); 0 without a curve.
+    /// ([`sigdt_lab::eval::stray`]); 0 without a curve.
     pub stray: f64,
 }
 
@@ -210,8 +209,9 @@ fn read_case(files: &CaseFiles, spacing: Option<f64>) -> Result<(Vec<Point>, Tru
         }
         None => None,
     };
-    let stray =
-        curve.as_ref().map_or(0.0, |(points, edges)| stray::stray(&pts, &gt, (points, edges)));
+    let stray = curve
+        .as_ref()
+        .map_or(0.0, |(points, edges)| sigdt_lab::eval::stray(&pts, &gt, (points, edges)));
     Ok((pts, Truth { gt, positions, curve, spacing, stray }))
 }
 
@@ -382,7 +382,7 @@ mod tests {
         let curve: Vec<Point> =
             (0..720).map(|k| at(std::f64::consts::TAU * k as f64 / 720.0, 1.0)).collect();
         let gt = ring(n);
-        let stray = stray::stray(&points, &gt, (&curve, &ring(720)));
+        let stray = sigdt_lab::eval::stray(&points, &gt, (&curve, &ring(720)));
         let truth = Truth {
             gt,
             positions: points.clone(),

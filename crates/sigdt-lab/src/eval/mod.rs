@@ -19,6 +19,7 @@ mod medial;
 mod metrics;
 mod overlap;
 mod region;
+mod stray;
 
 pub use area::{area_difference, AreaDifference};
 pub use distance::{
@@ -29,3 +30,4 @@ pub use exact::{edge_diff, is_exact, EdgeDiff};
 pub use metrics::{evaluate, Metrics};
 pub use overlap::{overlap, Coverage, GtCoverage, Overlap};
 pub use region::{region_overlap, topology, RegionOverlap, Topology};
+pub use stray::stray;
