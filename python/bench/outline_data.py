@@ -126,6 +126,13 @@ def holes(samples: list[np.ndarray]) -> int:
     return sum(d % 2 for d in depth)
 
 
+def halves(items: list[str], seed: int) -> dict[str, str]:
+    """A seeded half of the sorted source ``items`` for design, the rest held out (issue 49):
+    every second item of one permutation."""
+    order = np.random.default_rng(seed).permutation(len(items))
+    return {items[i]: ("design" if k % 2 == 0 else "held-out") for k, i in enumerate(order)}
+
+
 def number(x: float) -> str:
     return repr(float(x))
 
@@ -195,6 +202,7 @@ def main(argv: list[str]) -> int:
     step = max(1, -(-len(kept) // MAX_OUTLINES))
     chosen = kept[::step]
     index = []
+    half_of = halves(sorted(f"real:{row['name']}" for row, *_ in chosen), SEED)
     for row, rings, spacing, samples, k in chosen:
         base = row["name"]
         clean = np.vstack(samples)
@@ -239,6 +247,7 @@ def main(argv: list[str]) -> int:
                     n_out,
                     f"{spacing:.6g}",
                     n_holes,
+                    half_of[f"real:{base}"],
                     f"real:{base}",
                 ]
             )
@@ -256,6 +265,7 @@ def main(argv: list[str]) -> int:
                 "outliers",
                 "spacing",
                 "holes",
+                "half",
                 "source",
             ]
         )

@@ -49,7 +49,7 @@ import shapely
 from shapely.geometry import LinearRing
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from outline_data import holes, region, rings_of, write_case, write_truth
+from outline_data import halves, holes, region, rings_of, write_case, write_truth
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = ROOT / "data" / "real"
@@ -200,12 +200,6 @@ def outliers(
     return extra
 
 
-def halves(items: list[str]) -> dict[str, str]:
-    """A seeded half of the sorted source items for design, the rest held out."""
-    order = np.random.default_rng(SEED).permutation(len(items))
-    return {items[i]: ("design" if k % 2 == 0 else "held-out") for k, i in enumerate(order)}
-
-
 HEADER = [
     "name",
     "category",
@@ -233,7 +227,7 @@ def main(argv: list[str]) -> int:
             dropped.setdefault(why, []).append(base)
         else:
             usable.append((base, item, rings))
-    half_of = halves(sorted({item for _, item, _ in usable}))
+    half_of = halves(sorted({item for _, item, _ in usable}), SEED)
     index = []
     for k, (base, item, rings) in enumerate(usable):
         m = median_edge(rings)
