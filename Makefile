@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-networks data-outlines data-vertices wheel wheel-test man api-docs
+.PHONY: browser all build demo test test-long lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-networks data-outlines data-vertices wheel wheel-test man api-docs
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -46,6 +46,12 @@ demo: build
 ## package's tests (binding contract, properties, docs, Dask, CLI parity), and the same
 ## Python and CLI tests against the installed wheel (wheel-test).
 test: lint rust-test doc py-test api-docs wheel-test
+
+## test-long: the checks that need release builds (`.ci/run` runs it after `make test`): the
+## degenerate and determinism suites at their release sizes (a 100 x 100 grid, a 10^5-point
+## cocircular lattice, thread counts 2 and 3), which debug builds run at smaller sizes.
+test-long:
+	$(CARGO) test --release --locked -p sigdt --test degenerate --test determinism
 
 $(VENV)/.installed: requirements-dev.txt
 	$(PYTHON) -m venv $(VENV)
@@ -171,10 +177,13 @@ SWEEPS := $(TARGET_DIR)/sweeps
 TABLE1_CASES ?= svg_manif_blob2_path0_0_13,manif_blob_0022
 NOISE_CASE ?= manif_blob_0022
 NON_MANIFOLD_CASES ?= nm_theta_00,nm_cross_00,nm_pierced_00,nm_tee_00,nm_star_00,nm_overlap_00,nm_hash_00
+## data/vertices: every method but the slow ones (FITCONNECT, STRETCHDENOISE and
+## OPTIMALTRANSPORT take 0.3 s a case; data/outlines reports them), with concave_hull.
+VERTEX_METHODS := sig-auto,sig-connect2d,connect2d,crust,nn-crust,hnn-crust,crawl,discur,peel,emst
 report: build py-build
 	rm -rf $(TARGET_DIR)/concave-hull $(TARGET_DIR)/concave-hull-real \
 	  $(TARGET_DIR)/concave-hull-non-manifold $(TARGET_DIR)/concave-hull-outlines \
-	  $(TARGET_DIR)/concave-hull-networks $(SWEEPS)
+	  $(TARGET_DIR)/concave-hull-networks $(TARGET_DIR)/concave-hull-vertices $(SWEEPS)
 	$(VPY) -m sigdt.baselines $(DATA) $(TARGET_DIR)/concave-hull
 	$(SIGDT) bench $(DATA) --out $(REPORT) --import concave-hull=$(TARGET_DIR)/concave-hull
 	$(VPY) -m sigdt.baselines $(REAL) $(TARGET_DIR)/concave-hull-real
@@ -193,6 +202,11 @@ report: build py-build
 	$(VPY) -m sigdt.baselines data/outlines $(TARGET_DIR)/concave-hull-outlines --ratio 0.05
 	$(SIGDT) bench data/outlines --out $(REPORT)/outlines \
 	  --import concave-hull=$(TARGET_DIR)/concave-hull-outlines
+	$(VPY) -m sigdt.baselines data/vertices $(TARGET_DIR)/concave-hull-vertices --ratio 0.05
+	$(SIGDT) bench data/vertices --out $(REPORT)/vertices --method $(VERTEX_METHODS) \
+	  --import concave-hull=$(TARGET_DIR)/concave-hull-vertices
+	$(VPY) python/bench/any_method.py $(REPORT)/vertices/results.csv \
+	  --out $(REPORT)/vertices/any-method.md
 	$(SIGDT) sweep noise $(DATA) --out $(SWEEPS)/noise --jobs 2
 	$(SIGDT) sweep outliers $(DATA) --out $(SWEEPS)/outliers --jobs 2
 	$(SIGDT) sweep lfs-noise data/svg/simple.svg --out $(SWEEPS)/lfs-noise --jobs 2
@@ -245,6 +259,10 @@ REAL_WINS := mp7_octopus16_lfs030_out03 pysal_10740_r167_k1 mp7_Bone20_lfs030_no
   mp7_spring11_lfs030
 REAL_FAILURES := wdb_river6649_k1 gshhs_island81_k1 pysal_chicago77_r37_k1 \
   mp7_bell19_lfs030_out03 mp7_dog10_lfs030_noise0.002 gshhs_arch_society_k1
+## Issue 44's pictures in docs/sig-auto.md: digitised polygon vertices (data/vertices), wins
+## of the candidate readings and of the spike rule, and failures.
+VERTEX_PICTURES := ne_taiwan_raw ne_centralafricanrep_raw ne_costarica_outliers \
+  ne_palestine_raw ne_guatemala_raw ne_brazil_raw
 ## pictures: the README picture (what `make demo` draws), the steps of docs/steps.md and the
 ## wins and failures of SIG-AUTO in docs/sig-auto.md (from $(DATA)).
 pictures: build py-build
@@ -275,6 +293,13 @@ pictures: build py-build
 	for c in $(REAL_WINS); do \
 	  $(SIGDT) render $(REAL)/$$c.xy --gt $(REAL)/$$c.gt --method sig-connect2d --width 420 \
 	    -o docs/images/sig-auto/real/$$c.sig-connect2d.svg; \
+	done
+	mkdir -p docs/images/sig-auto/vertices
+	for c in $(VERTEX_PICTURES); do \
+	  for m in sig-connect2d sig-auto; do \
+	    $(SIGDT) render data/vertices/$$c.xy --gt data/vertices/$$c.gt --method $$m --width 420 \
+	      -o docs/images/sig-auto/vertices/$$c.$$m.svg; \
+	  done; \
 	done
 	mkdir -p docs/images/sig-auto/outlines
 	for c in $(OUTLINE_PICTURES); do \
