@@ -64,6 +64,13 @@
 //!    before the reading: no branch or detour through them is an outlier (steps 1 and 4),
 //!    and when they are all the points, the pairs' graph is the reading.
 //!
+//! 9. **Candidates** (`candidates`): where the checked reading still breaks the sampling
+//!    (the check's findings but zigzags and ends that meet, or points left inside) or
+//!    leaves curves open, the polygons of SIG-CONNECT2D and CONNECT2D through the points it
+//!    keeps are read too, and the one measure decides: fewest breaks, then the shortest
+//!    (open paths closed by their chords). Digitised polygon vertices, which break `u < 2`
+//!    everywhere, come back closed where the reading left them open or split.
+//!
 //! Points left out are listed in the result with the reason `outlier`; a result whose
 //! loops pass through every point that is not left out is a `polygon` or `polygons`.
 //!
