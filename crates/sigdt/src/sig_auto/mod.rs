@@ -75,9 +75,11 @@
 //! loops pass through every point that is not left out is a `polygon` or `polygons`.
 //!
 //! # Guarantees
-//! - The output is made of Delaunay edges, no two of which cross. Without junctions
-//!   (status other than `network`) it is a set of vertex-disjoint simple loops and simple
-//!   open paths; a network's paths share only junctions.
+//! - The output is made of Delaunay edges, no two of which cross (of the points not left
+//!   out as outliers, where a candidate polygon of step 9 replaces a reading that left
+//!   some out). Without junctions (status other than `network`) it is a set of
+//!   vertex-disjoint simple loops and simple open paths; a network's paths share only
+//!   junctions.
 //! - A closed curve sampled with ρ < 1 and u < 2 ([MOW22] Theorem 1): SIGDT contains its
 //!   polygon; when that polygon is the component's spanning path plus one edge, the closing
 //!   edge satisfies the join bound and the curve comes back closed.
