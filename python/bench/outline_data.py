@@ -36,6 +36,21 @@ MIN_RING_SAMPLES = 12
 MAX_SAMPLES = 4000
 MIN_IOU = 0.97
 MAX_OUTLINES = 120
+#: The columns of ``index.csv`` (the vertex set's too).
+INDEX_HEADER = [
+    "name",
+    "category",
+    "n_points",
+    "n_components",
+    "closed",
+    "epsilon",
+    "noise",
+    "outliers",
+    "spacing",
+    "holes",
+    "half",
+    "source",
+]
 
 
 def rings_of(points: np.ndarray, edges: np.ndarray) -> list[np.ndarray]:
@@ -253,22 +268,7 @@ def main(argv: list[str]) -> int:
             )
     with open(out / "index.csv", "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
-        writer.writerow(
-            [
-                "name",
-                "category",
-                "n_points",
-                "n_components",
-                "closed",
-                "epsilon",
-                "noise",
-                "outliers",
-                "spacing",
-                "holes",
-                "half",
-                "source",
-            ]
-        )
+        writer.writerow(INDEX_HEADER)
         writer.writerows(index)
     counts = {"kept": len(chosen), "usable": len(kept), "dropped": dropped}
     (out / "counts.json").write_text(json.dumps(counts, indent=1, sort_keys=True) + "\n")

@@ -49,7 +49,7 @@ import shapely
 from shapely.geometry import LinearRing
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from outline_data import halves, holes, region, rings_of, write_case, write_truth
+from outline_data import INDEX_HEADER, halves, holes, region, rings_of, write_case, write_truth
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCE = ROOT / "data" / "real"
@@ -200,22 +200,6 @@ def outliers(
     return extra
 
 
-HEADER = [
-    "name",
-    "category",
-    "n_points",
-    "n_components",
-    "closed",
-    "epsilon",
-    "noise",
-    "outliers",
-    "spacing",
-    "holes",
-    "half",
-    "source",
-]
-
-
 def main(argv: list[str]) -> int:
     out = Path(argv[0]) if argv else ROOT / "data" / "vertices"
     out.mkdir(parents=True, exist_ok=True)
@@ -267,7 +251,7 @@ def main(argv: list[str]) -> int:
             index.append([*row, f"{spacing:.6g}", n_holes, half_of[item], item])
     with open(out / "index.csv", "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
-        writer.writerow(HEADER)
+        writer.writerow(INDEX_HEADER)
         writer.writerows(index)
     counts = {
         "outlines": len(usable),
