@@ -19,7 +19,10 @@
 //!    150° at `v` between two edges that are both long at their far ends goes out to `v`
 //!    and comes back: a point wired into a curve it is far from (an outlier), not a sampled
 //!    curve, whose samples turn by less than 60° (ε < 1) and, at a corner, leave along its
-//!    two sides. Finding [`FindingKind::DoublesBack`].
+//!    two sides. Where the point is itself twice as sparse as both its neighbours and the
+//!    reading turns by more than 60° at one of them to reach it, edges of twice the spacing
+//!    (the bound, not twice it) suffice: a spike out to an outlier two or three spacings
+//!    off. Finding [`FindingKind::DoublesBack`].
 //!
 //! 3. **A closed curve has at least [`MIN_LOOP_POINTS`] samples**: ρ < 1 is ε < 0.5
 //!    ([MOW22] Corollary 2), and a circle with `n` evenly spread samples has ε = 2 sin(π/2n),
@@ -384,10 +387,10 @@ fn doubling_back_with(
         }
         let far =
             |w: u32, ratio: f64| distance(dt.point(v), dt.point(w)) >= ratio * spacing.at(dt, w);
-        // A point whose own spacing is twice its neighbours' on both sides, reached by turns
-        // sharper than a sampled curve's (60°, ε < 1) at both, is no corner of the curve
-        // (whose sides run on straight) but a point the reading goes out to: edges beyond
-        // the bound `u < 2` itself, not twice it, make it a wired point.
+        // A point whose own spacing is twice its neighbours' on both sides, reached by a turn
+        // sharper than a sampled curve's (60°, ε < 1) at one of them at least, is no corner
+        // of the curve (whose sides run on straight at both) but a point the reading goes
+        // out to: edges beyond the bound `u < 2` itself, not twice it, make it a wired point.
         let isolated = spacing.at(dt, v) >= DEPTH_RATIO * spacing.at(dt, a).max(spacing.at(dt, b))
             && (closed || (k >= 2 && k + 2 < n))
             && (turn_cos(dt, curve[(k + n - 2) % n], a, v) < SAMPLED_TURN_COS
