@@ -54,9 +54,10 @@ pub(crate) struct Misfit {
 
 impl Misfit {
     /// The misfit of `rec`, whose sampling check has run.
-    pub(crate) fn of(points: &[Point], rec: &Reconstruction) -> Misfit {
-        let edge = |&[a, b]: &[usize; 2]| distance(points[a], points[b]);
-        let chords = rec.paths.iter().map(|p| distance(points[p[0]], points[p[p.len() - 1]]));
+    /// `at` gives the point of an input index of the result.
+    pub(crate) fn of(at: impl Fn(usize) -> Point, rec: &Reconstruction) -> Misfit {
+        let edge = |&[a, b]: &[usize; 2]| distance(at(a), at(b));
+        let chords = rec.paths.iter().map(|p| distance(at(p[0]), at(p[p.len() - 1])));
         let length = rec.edges.iter().map(edge).sum::<f64>() + chords.sum::<f64>();
         Misfit { breaks: breaks(rec), length }
     }
@@ -87,34 +88,29 @@ pub(crate) fn best_reading(dt: &Triangulation, rec: Reconstruction) -> Reconstru
     {
         return rec;
     }
-    // Every input point, duplicates as their representatives (which stand for them in the
-    // result).
+    // A result indexes only points with a vertex (a duplicate's representative stands for
+    // it), so every index it holds has one.
     let vertex_of = dt.vertex_of_inputs();
-    let at = |v: u32| if v == u32::MAX { [0.0; 2] } else { dt.point(v) };
-    let mut points: Vec<Point> = vertex_of.iter().map(|&v| at(v)).collect();
-    for &[duplicate, representative] in dt.duplicates() {
-        points[duplicate] = points[representative];
-    }
-    let points = points.as_slice();
-    let mut best_misfit = Misfit::of(points, &rec);
-    let own_uniformity = worst_uniformity(points, &rec.loops, &rec.paths, None);
+    let at = |i: usize| dt.point(vertex_of[i]);
+    let mut best_misfit = Misfit::of(at, &rec);
+    let own_uniformity = worst_uniformity(at, &rec.loops, &rec.paths, None);
     let own_edges: HashSet<[usize; 2]> =
         rec.edges.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect();
     let (min_loops, max_loops) = (rec.loops.len(), rec.loops.len().max(1));
     let mut best = rec;
-    for mut candidate in polygons_through_kept(dt, &best) {
+    for mut candidate in polygons_through_kept(dt, &best, &vertex_of) {
         if !candidate.paths.is_empty()
             || candidate.loops.len() < min_loops
             || candidate.loops.len() > max_loops
         {
             continue;
         }
-        let new_uniformity = worst_uniformity(points, &candidate.loops, &[], Some(&own_edges));
+        let new_uniformity = worst_uniformity(at, &candidate.loops, &[], Some(&own_edges));
         if new_uniformity > own_uniformity.max(LONG_EDGE_RATIO) {
             continue;
         }
         candidate.diagnosis = diagnose(dt, &candidate);
-        let misfit = Misfit::of(points, &candidate);
+        let misfit = Misfit::of(at, &candidate);
         if misfit.better_than(&best_misfit) {
             (best, best_misfit) = (candidate, misfit);
         }
@@ -123,9 +119,14 @@ pub(crate) fn best_reading(dt: &Triangulation, rec: Reconstruction) -> Reconstru
 }
 
 /// The polygons of SIG-CONNECT2D and CONNECT2D through the points that `rec` keeps (the
-/// outliers it left out stay out), as results on `dt`.
-fn polygons_through_kept(dt: &Triangulation, rec: &Reconstruction) -> Vec<Reconstruction> {
-    let outliers = outlier_vertices(rec, &dt.vertex_of_inputs());
+/// outliers it left out stay out), as results on `dt` (`vertex_of`: its vertex of each input
+/// index).
+fn polygons_through_kept(
+    dt: &Triangulation,
+    rec: &Reconstruction,
+    vertex_of: &[u32],
+) -> Vec<Reconstruction> {
+    let outliers = outlier_vertices(rec, vertex_of);
     if outliers.is_empty() {
         return vec![sig_connect2d_on(dt, true), connect2d_on(dt)];
     }
@@ -145,7 +146,7 @@ fn polygons_through_kept(dt: &Triangulation, rec: &Reconstruction) -> Vec<Recons
 /// The largest ratio of the longer to the shorter edge at a vertex of `loops` and inside
 /// `paths`; with `skip`, only at vertices with an edge not in `skip` (1 without any).
 fn worst_uniformity(
-    points: &[Point],
+    at: impl Fn(usize) -> Point,
     loops: &[Vec<usize>],
     paths: &[Vec<usize>],
     skip: Option<&HashSet<[usize; 2]>>,
@@ -154,7 +155,7 @@ fn worst_uniformity(
     let mut worst = 1.0f64;
     let mut visit = |a: usize, b: usize, c: usize| {
         if new(a, b) || new(b, c) {
-            let (x, y) = (distance(points[a], points[b]), distance(points[b], points[c]));
+            let (x, y) = (distance(at(a), at(b)), distance(at(b), at(c)));
             if x.min(y) > 0.0 {
                 worst = worst.max(x.max(y) / x.min(y));
             }
