@@ -14,12 +14,22 @@ is junctions found right over the output's vertices of degree 3 or more, recall 
 ground truth's. A folder whose ``index.csv`` has a ``half`` column (``design`` /
 ``held-out``, split by source item: ``data/networks``) is scored on all its cases and on
 each half, in rows side by side.
+
+Beside the table it writes ``scores.json`` (the counts and the scores of every row, for the
+figures the README quotes: ``python/tests/test_published_numbers.py``)::
+
+    {"folders": ["data/non-manifold", "data/networks"], "rows": [
+      {"method": "emst", "category": "data/networks", "half": "all", "cases": 120,
+       "exact": 27, "edges_right": ..., "edge_p": 0.9, "edge_r": 0.9, "edge_f1": 0.9,
+       "junctions": ..., "junctions_found": ..., "junctions_right": ...,
+       "junction_p": null, "junction_r": 0.7}, ...]}
 """
 
 from __future__ import annotations
 
 import argparse
 import csv
+import json
 import subprocess
 import sys
 from collections import Counter
@@ -116,6 +126,29 @@ def half_summary(name: str, cases: list[Path], half_of: dict[str, str]) -> str:
     return f"`{name}`: {len(stems)} cases from {len(items)} networks"
 
 
+def json_row(method: str, folder: Path, half: str, t: Counter) -> dict:
+    """The counts and scores of `method` on `folder`'s cases of `half` (summed into `t`)."""
+    p, r = t["right"] / max(t["output"], 1), t["right"] / max(t["truth"], 1)
+    return {
+        "method": method,
+        "category": folder.as_posix(),
+        "half": half,
+        "cases": t["cases"],
+        "exact": t["exact"],
+        "edges_right": t["right"],
+        "edges_output": t["output"],
+        "edges_truth": t["truth"],
+        "edge_p": p,
+        "edge_r": r,
+        "edge_f1": 2 * p * r / (p + r) if p + r else 0.0,
+        "junctions": t["junctions"],
+        "junctions_found": t["found"],
+        "junctions_right": t["found_right"],
+        "junction_p": t["found_right"] / t["found"] if t["found"] else None,
+        "junction_r": t["found_right"] / t["junctions"] if t["junctions"] else None,
+    }
+
+
 def ratio(a: int, b: int) -> str:
     return f"{a / b:.3f}" if b else "–"
 
@@ -136,6 +169,7 @@ def main() -> None:
         "R: over the ground truth's.",
         "",
     ]
+    rows: list[dict] = []
     for folder in args.folders:
         cases = labelled_cases(folder, "network_scores")
         half_of = halves_of(folder)
@@ -159,6 +193,10 @@ def main() -> None:
             ]
         for method in METHODS:
             per_case = score(cli, folder, method)
+            rows.append(json_row(method, folder, "all", sum(per_case.values(), Counter())))
+            for name in names:
+                part = [t for case, t in per_case.items() if half_of.get(case) == name]
+                rows.append(json_row(method, folder, name, sum(part, Counter())))
             if not names:
                 lines.append(row(method, None, sum(per_case.values(), Counter())))
                 continue
@@ -169,6 +207,11 @@ def main() -> None:
         lines.append("")
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text("\n".join(lines))
+    folders = [folder.as_posix() for folder in args.folders]
+    body = ",\n".join(f"    {json.dumps(r)}" for r in rows)
+    args.out.with_suffix(".json").write_text(
+        f'{{\n  "folders": {json.dumps(folders)},\n  "rows": [\n{body}\n  ]\n}}\n'
+    )
 
 
 if __name__ == "__main__":

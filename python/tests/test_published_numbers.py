@@ -18,7 +18,9 @@ A figure quoted in the prose says where it comes from with a marker: an HTML com
 The marker is ``<!-- REPORT: METHOD CATEGORY HALF EXPR -->``:
 
 - ``REPORT`` names ``docs/report/REPORT/numbers.json``; ``curves`` or ``.`` names
-  ``docs/report/numbers.json`` itself. Any HTML comment whose text starts with ``WORD:`` is
+  ``docs/report/numbers.json`` itself; ``FOLDER/NAME`` names ``docs/report/FOLDER/NAME.json``
+  (``networks/scores``: the edge and junction scores of ``python/bench/network_scores.py``,
+  whose rows have the same keys ``method``, ``category``, ``half``). Any HTML comment whose text starts with ``WORD:`` is
   a marker, so other comments must not start that way.
 - ``METHOD CATEGORY HALF`` pick exactly one row (``HALF`` is ``all``, ``design`` or
   ``held-out``); a token with spaces is quoted (``"manifold eps<1"``).
@@ -32,6 +34,18 @@ with the file's value formatted to as many decimals as the figure has:
   must already be a percentage.
 - ``FIELD/FIELD``: a percentage ``96.0 %`` (100 * A / B), a fraction ``72/75`` (both A and
   B), or a plain number ``0.96`` (A / B).
+
+A table copied from a report carries one marker, alone on the line before it::
+
+    <!-- table curves: all exact/cases% manifold,sharp,open -->
+    | method | manifold | sharp | open | mean ms |
+    |---|--:|--:|--:|--:|
+    | sig-connect2d | 95.5 | 75.0 | 0.0 | 0.12 |
+
+``table REPORT: HALF EXPR COLUMNS`` (the column names separated by commas) checks, in every row of the table, the cells of the
+named columns (each a category; other columns, such as times, are not checked) against the
+row of the method its first cell names (its first word, without code marks). ``EXPR`` is
+as above; ``FIELD/FIELD%`` says the cells are percentages written without their sign.
 
 Rounding is Python's ``format`` (round half to even on the exact binary value), which is
 Rust's too, so a figure copied from ``report.md`` matches. Markers inside fenced code blocks
@@ -55,7 +69,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 COMMENT = re.compile(r"<!--(.*?)-->")
 MARKER = re.compile(r"^\s*(?P<report>[^\s:]+):(?P<rest>(?:\s.*)?)$", re.DOTALL)
-REPORT = re.compile(r"^(?:\.|[A-Za-z0-9_-]+)$")
+REPORT = re.compile(r"^(?:\.|[A-Za-z0-9_-]+(?:/[A-Za-z0-9_-]+)?)$")
 EXPR = re.compile(r"^(?P<a>[A-Za-z_]\w*)(?:/(?P<b>[A-Za-z_]\w*))?$")
 NUMBER = r"[-\u2212]?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?"
 FIGURE = re.compile(
@@ -63,6 +77,11 @@ FIGURE = re.compile(
     r"[*_`]*\s*$"
 )
 FENCE = re.compile(r"^ {0,3}(```|~~~)")
+TABLE = re.compile(
+    r"^\s*table\s+(?P<report>[^\s:]+):\s+(?P<half>\S+)\s+(?P<expr>\S+?)(?P<percent>%?)"
+    r"\s+(?P<columns>\S.*?)\s*$"
+)
+CELL_MARKS = "*_` \t"
 
 
 @dataclass(frozen=True)
@@ -88,6 +107,14 @@ def scan(text: str, shown: str) -> tuple[list[Marker], list[str]]:
             continue
         if fenced:
             continue
+        table = TABLE.match(line.strip()[4:-3]) if line.strip().startswith("<!--") else None
+        if table and line.strip().endswith("-->"):
+            where = f"{shown}:{number}"
+            try:
+                markers += table_markers(table, text.splitlines()[number:], shown, number)
+            except ValueError as e:
+                problems.append(f"{where}: {line.strip()}: {e}")
+            continue
         for comment in COMMENT.finditer(line):
             marker = MARKER.match(comment.group(1))
             if not marker or line[: comment.start()].count("`") % 2:
@@ -100,12 +127,72 @@ def scan(text: str, shown: str) -> tuple[list[Marker], list[str]]:
     return markers, problems
 
 
+def cells(line: str) -> list[str]:
+    """The cells of a Markdown table row."""
+    return [c.strip() for c in line.strip().strip("|").split("|")]
+
+
+def table_markers(table: re.Match, after: list[str], shown: str, number: int) -> list[Marker]:
+    """A marker for each checked cell of the table on the lines `after` a table marker (on
+    line `number`); a ValueError says what is malformed."""
+    report, half = table.group("report"), table.group("half")
+    if not REPORT.match(report):
+        raise ValueError(
+            f"'{report}' is not a folder name under docs/report, FOLDER/NAME, 'curves' or '.'"
+        )
+    expr = EXPR.match(table.group("expr"))
+    if not expr:
+        raise ValueError(f"'{table.group('expr')}' is not FIELD or FIELD/FIELD")
+    percent = " %" if table.group("percent") else ""
+    if percent and not expr.group("b"):
+        raise ValueError("a percentage needs FIELD/FIELD")
+    rows = []
+    for line in after:
+        if not line.strip().startswith("|"):
+            break
+        rows.append(line)
+    if len(rows) < 3:
+        raise ValueError("no Markdown table on the lines right after it")
+    header = cells(rows[0])
+    columns = table.group("columns").split(",")
+    missing = [c for c in columns if c not in header]
+    if missing:
+        raise ValueError(f"the table has no column {', '.join(map(repr, missing))}")
+    markers = []
+    for offset, line in enumerate(rows[2:], 3):
+        row = cells(line)
+        if len(row) != len(header):
+            raise ValueError(
+                f"line {number + offset} has {len(row)} cells, the header {len(header)}"
+            )
+        method = row[0].strip(CELL_MARKS).split()[0].strip(CELL_MARKS) if row[0].strip() else ""
+        for column in columns:
+            figure = row[header.index(column)].strip(CELL_MARKS)
+            if not re.fullmatch(NUMBER, figure):
+                raise ValueError(
+                    f"line {number + offset}, column {column!r}: {figure!r} is no figure"
+                )
+            markers.append(
+                Marker(
+                    where=f"{shown}:{number + offset}",
+                    comment=f"<!-- table {report}: {half} {table.group('expr')}{table.group('percent')} -->",
+                    figure=figure + percent,
+                    report=report,
+                    row=(method, column, half),
+                    fields=tuple(f for f in expr.group("a", "b") if f),
+                )
+            )
+    return markers
+
+
 def parse(before: str, marker: re.Match, where: str, written: str) -> Marker:
     """The marker `written` with the text `before` it on its line; a ValueError says what is
     malformed."""
     report = marker.group("report")
     if not REPORT.match(report):
-        raise ValueError(f"'{report}' is not a folder name under docs/report (or 'curves', '.')")
+        raise ValueError(
+            f"'{report}' is not a folder name under docs/report, FOLDER/NAME, 'curves' or '.'"
+        )
     try:
         tokens = shlex.split(marker.group("rest"))
     except ValueError as e:
@@ -134,9 +221,11 @@ def parse(before: str, marker: re.Match, where: str, written: str) -> Marker:
 
 def numbers_path(root: Path, report: str) -> Path:
     folder = root / "docs" / "report"
-    return (
-        folder / "numbers.json" if report in {"curves", "."} else folder / report / "numbers.json"
-    )
+    if report in {"curves", "."}:
+        return folder / "numbers.json"
+    if "/" in report:
+        return folder / f"{report}.json"
+    return folder / report / "numbers.json"
 
 
 def load_rows(path: Path) -> dict[tuple[str, str, str], list[dict]]:
@@ -230,6 +319,97 @@ def check_documents(root: Path) -> tuple[list[Marker], list[str]]:
     return markers, problems
 
 
+# --- figures without a marker -----------------------------------------------------------------
+
+# A percentage (or a range of them) with no marker right after it.
+PERCENTAGE = re.compile(
+    rf"(?<![\w.]){NUMBER}(?:\s*[\u2013-]\s*{NUMBER})?\s*%(?![*_`\s]*<!--\s*[^\s:]+:)"
+)
+UNCHECKED = re.compile(r"<!--\s*unchecked:\s*\S[^>]*-->")
+
+
+def hand_written(root: Path) -> list[Path]:
+    """README.md and docs/*.md: the documents people write (docs/report/ is generated)."""
+    readme = [root / "README.md"] if (root / "README.md").is_file() else []
+    return readme + sorted((root / "docs").glob("*.md"))
+
+
+def unmarked_percentages(text: str, shown: str) -> list[str]:
+    """The percentages of a Markdown text that no marker checks, outside code, tables that
+    carry a table marker and paragraphs that say why they are not checked
+    (``<!-- unchecked: the paper's own figures -->``): one ``file:line: figure`` each."""
+    found: list[str] = []
+    paragraph: list[tuple[int, str]] = []
+    fenced = False
+
+    def close() -> None:
+        lines = [line for _, line in paragraph]
+        tabled = bool(lines) and TABLE.match(
+            lines[0].strip()[4:-3] if lines[0].strip().startswith("<!--") else ""
+        )
+        if not any(UNCHECKED.search(line) for line in lines) and not tabled:
+            for number, line in paragraph:
+                prose = re.sub(r"`[^`]*`", "", line)
+                found.extend(
+                    [
+                        f"{shown}:{number}: {m.group(0).strip()!r}"
+                        for m in PERCENTAGE.finditer(prose)
+                    ]
+                )
+        paragraph.clear()
+
+    for number, line in enumerate(text.splitlines(), 1):
+        if FENCE.match(line):
+            fenced = not fenced
+            close()
+            continue
+        if fenced:
+            continue
+        if line.strip():
+            paragraph.append((number, line))
+        else:
+            close()
+    close()
+    return found
+
+
+def test_every_percentage_in_readme_and_docs_is_checked_or_says_why_not():
+    found = [
+        figure
+        for path in hand_written(ROOT)
+        for figure in unmarked_percentages(
+            path.read_text(encoding="utf-8"), path.relative_to(ROOT).as_posix()
+        )
+    ]
+    if found:
+        pytest.fail(
+            f"{len(found)} percentage(s) with no marker: give each a marker naming its "
+            "numbers.json row, or put <!-- unchecked: WHY --> in its paragraph (the paper's "
+            "figures, a profile, a parameter of the data):\n" + "\n".join(found),
+            pytrace=False,
+        )
+
+
+@pytest.mark.parametrize(
+    ("text", "unmarked"),
+    [
+        ("right on 96.0 %<!-- outlines: sig-auto outline-clean all good/cases -->.", []),
+        ("right on **96.0 %**<!-- outlines: sig-auto outline-clean all good/cases -->.", []),
+        ("right on 96.0 % of them.", ["doc.md:1: '96.0 %'"]),
+        ("1\u20133 % outliers", ["doc.md:1: '1\u20133 %'"]),
+        ("<!-- unchecked: the generator's parameters -->\n1\u20133 % outliers", []),
+        ("the paper: 91.5 %\n<!-- unchecked: the paper's -->\n\nours: 95 %", ["doc.md:4: '95 %'"]),
+        ("`95 %` in code", []),
+        ("```\n95 %\n```", []),
+        ("<!-- table outlines: all good/cases% a -->\n| m | a |\n|--|--|\n| x | 95 % |", []),
+        ("| m | a |\n|--|--|\n| x | 95 % |", ["doc.md:3: '95 %'"]),
+        ("95%<!-- a comment -->", ["doc.md:1: '95%'"]),
+    ],
+)
+def test_unmarked_percentages_are_found(text, unmarked):
+    assert unmarked_percentages(text, "doc.md") == unmarked
+
+
 # --- the documents of the repository ---------------------------------------------------------
 
 
@@ -282,10 +462,14 @@ ROWS = {
 
 @pytest.fixture
 def root(tmp_path):
-    """A repository with docs/report/outlines/numbers.json and docs/report/numbers.json."""
+    """A repository with docs/report/outlines/numbers.json, docs/report/numbers.json and
+    docs/report/networks/scores.json."""
     for folder in (tmp_path / "docs" / "report" / "outlines", tmp_path / "docs" / "report"):
         folder.mkdir(parents=True, exist_ok=True)
         (folder / "numbers.json").write_text(json.dumps(ROWS), encoding="utf-8")
+    (tmp_path / "docs" / "report" / "networks").mkdir()
+    scores = tmp_path / "docs" / "report" / "networks" / "scores.json"
+    scores.write_text(json.dumps(ROWS), encoding="utf-8")
     return tmp_path
 
 
@@ -312,6 +496,7 @@ def problems_of(text: str, root: Path) -> list[str]:
         "1,187<!-- .: sig-auto 'manifold eps<1' all good -->",
         '1,187<!-- curves: sig-auto "manifold eps<1" all good -->',
         "96.7 %<!-- outlines: sig-auto all design good/cases -->",
+        "72<!-- networks/scores: sig-auto outline-clean all good -->",
     ],
 )
 def test_a_right_figure_passes(text, root):
@@ -336,6 +521,8 @@ def test_a_right_figure_passes(text, root):
         ("about<!-- outlines: sig-auto outline-clean all good -->", "no figure"),
         ("72/75<!-- outlines: sig-auto outline-clean all good -->", "needs FIELD/FIELD"),
         ("72<!-- ../x: sig-auto outline-clean all good -->", "not a folder name"),
+        ("72<!-- outlines/a/b: sig-auto outline-clean all good -->", "not a folder name"),
+        ("72<!-- outlines/scores: sig-auto outline-clean all good -->", "scores.json does not"),
     ],
 )
 def test_a_drifted_or_broken_marker_fails(text, says, root):
@@ -400,3 +587,45 @@ def test_every_marker_on_a_missing_file_says_so(root):
     problems = problems_of(text, root)
     assert len(problems) == 2, problems
     assert all("docs/report/vertices/numbers.json does not exist" in p for p in problems)
+
+
+TABLE_TEXT = """intro
+
+<!-- table outlines: all good/cases% outline-clean -->
+| method | outline-clean | mean ms |
+|---|--:|--:|
+| `sig-auto` (the default) | **CELL** | 0.12 |
+"""
+
+
+def test_a_table_marker_checks_its_columns(root):
+    assert problems_of(TABLE_TEXT.replace("CELL", "96.0"), root) == []
+    assert problems_of(TABLE_TEXT.replace("CELL", "96"), root) == []
+    [problem] = problems_of(TABLE_TEXT.replace("CELL", "95.9"), root)
+    assert problem.startswith("doc.md:6: <!-- table outlines: all good/cases% -->: quoted '95.9 %'")
+    assert "gives '96.0%'" in problem, problem
+
+
+@pytest.mark.parametrize(
+    ("marker", "says"),
+    [
+        ("<!-- table outlines: all good/cases% outline-noisy -->", "no column 'outline-noisy'"),
+        ("<!-- table outlines: all good% outline-clean -->", "needs FIELD/FIELD"),
+        ("<!-- table ../x: all good outline-clean -->", "not a folder name"),
+        ("<!-- table outlines: all good/cases% mean -->", "no column 'mean'"),
+        ("<!-- table outlines: all good/cases% mean s -->", "no column 'mean s'"),
+        ("<!-- table outlines: all good/cases% outline-clean,mean s -->", "no column 'mean s'"),
+    ],
+)
+def test_a_broken_table_marker_fails(marker, says, root):
+    text = TABLE_TEXT.replace("CELL", "96.0").replace(
+        "<!-- table outlines: all good/cases% outline-clean -->", marker
+    )
+    problems = problems_of(text, root)
+    assert len(problems) == 1 and problems[0].startswith("doc.md:3: "), problems
+    assert says in problems[0], problems[0]
+
+
+def test_a_table_cell_that_is_no_figure_fails(root):
+    [problem] = problems_of(TABLE_TEXT.replace("CELL", "–"), root)
+    assert "column 'outline-clean': '–' is no figure" in problem, problem

@@ -12,8 +12,10 @@
 //! ```
 //!
 //! One row per method × category × half, in the report's order: the methods, then per
-//! method the categories and `all`, then per category the half `all` and, when `index.csv`
-//! has a `half` column, each half (`design`, `held-out`).
+//! method the categories, `manifold eps<1` (the manifold cases whose `epsilon` in
+//! `index.csv` is below the threshold, when the folder gives it: the paper's ε < 1 column)
+//! and `all`, then per category the half `all` and, when `index.csv` has a `half` column,
+//! each half (`design`, `held-out`).
 use serde_json::Value;
 
 use super::summary::Summary;
@@ -23,6 +25,9 @@ use crate::bench::record::CurveScore;
 pub(super) fn numbers_json(s: &Summary) -> String {
     let mut groups: Vec<(String, Vec<usize>)> =
         s.categories().into_iter().map(|c| (c.clone(), s.in_category(&c))).collect();
+    if let Some(cases) = s.well_sampled(false) {
+        groups.push(("manifold eps<1".into(), cases));
+    }
     groups.push(("all".into(), (0..s.data.cases.len()).collect()));
     let halves: Vec<String> = ["all".to_string()].into_iter().chain(s.halves()).collect();
     let mut rows = Vec::new();

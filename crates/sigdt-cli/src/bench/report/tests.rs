@@ -360,10 +360,17 @@ fn numbers_row<'a>(
 fn numbers_json_holds_the_counts() {
     let (_, _, dir) = report(&judged_sample());
     let rows = numbers(&dir);
-    // 3 methods × (5 categories + all) × the half "all".
-    assert_eq!(rows.len(), 3 * 6);
-    let first: Vec<&str> = rows[..6].iter().map(|r| r["category"].as_str().unwrap()).collect();
-    assert_eq!(first, ["manifold", "sharp", "open", "outline-clean", "outline-noise", "all"]);
+    // 3 methods × (5 categories + manifold eps<1 + all) × the half "all".
+    assert_eq!(rows.len(), 3 * 7);
+    let first: Vec<&str> = rows[..7].iter().map(|r| r["category"].as_str().unwrap()).collect();
+    let categories = ["manifold", "sharp", "open", "outline-clean", "outline-noise"];
+    assert_eq!(first, [&categories[..], &["manifold eps<1", "all"]].concat());
+    // m1 and m2 (ε 0.5 and 0.8, both exact), not m3 (ε 1.5).
+    let well_sampled = numbers_row(&rows, "sig-connect2d", "manifold eps<1", "all");
+    assert_eq!(
+        (well_sampled["cases"].as_u64(), well_sampled["exact"].as_u64()),
+        (Some(2), Some(2))
+    );
     let fields: Vec<&String> = rows[0].as_object().unwrap().keys().collect();
     assert_eq!(fields.len(), 15, "{fields:?}");
     let sig = numbers_row(&rows, "sig-connect2d", "outline-clean", "all");
@@ -418,7 +425,7 @@ fn halves_are_shown_side_by_side() {
     assert!(csv.lines().any(|l| l.starts_with("a,outline-clean,") && l.ends_with(",held-out")));
     assert_eq!(read_results_csv(csv.as_bytes()).unwrap().halves, data.halves);
     let rows = numbers(&dir);
-    assert_eq!(rows.len(), 3 * 6 * 3);
+    assert_eq!(rows.len(), 3 * 7 * 3);
     let halves: Vec<&str> = rows[..3].iter().map(|r| r["half"].as_str().unwrap()).collect();
     assert_eq!(halves, ["all", "design", "held-out"]);
     let design = numbers_row(&rows, "hull", "outline-clean", "design");
