@@ -21,7 +21,7 @@ The marker is ``<!-- REPORT: METHOD CATEGORY HALF EXPR -->``:
   ``docs/report/numbers.json`` itself; ``FOLDER/NAME`` names ``docs/report/FOLDER/NAME.json``
   (``networks/scores``: the edge and junction scores of ``python/bench/network_scores.py``,
   whose rows have the same keys ``method``, ``category``, ``half``). Any HTML comment whose text starts with ``WORD:`` is
-  a marker, so other comments must not start that way.
+  a marker, so other comments must not start that way (but ``unchecked: WHY``: see below).
 - ``METHOD CATEGORY HALF`` pick exactly one row (``HALF`` is ``all``, ``design`` or
   ``held-out``); a token with spaces is quoted (``"manifold eps<1"``).
 - ``EXPR`` is ``FIELD`` or ``FIELD/FIELD``, fields of that row.
@@ -46,6 +46,13 @@ A table copied from a report carries one marker, alone on the line before it::
 named columns (each a category; other columns, such as times, are not checked) against the
 row of the method its first cell names (its first word, without code marks). ``EXPR`` is
 as above; ``FIELD/FIELD%`` says the cells are percentages written without their sign.
+
+Every percentage of README.md and docs/*.md (not the generated docs/report/) is checked:
+a marker follows it, or it sits in a table with a table marker, or its paragraph says why
+no report holds it with ``<!-- unchecked: WHY -->`` (the paper's own figures, a profile, a
+parameter of the data, a figure measured once at a past commit). A new percentage without
+either fails ``test_every_percentage_in_readme_and_docs_is_checked_or_says_why_not``.
+Counts written as words or as "N of M" are not found by that test: mark them all the same.
 
 Rounding is Python's ``format`` (round half to even on the exact binary value), which is
 Rust's too, so a figure copied from ``report.md`` matches. Markers inside fenced code blocks
@@ -117,7 +124,11 @@ def scan(text: str, shown: str) -> tuple[list[Marker], list[str]]:
             continue
         for comment in COMMENT.finditer(line):
             marker = MARKER.match(comment.group(1))
-            if not marker or line[: comment.start()].count("`") % 2:
+            if (
+                not marker
+                or line[: comment.start()].count("`") % 2
+                or UNCHECKED.match(comment.group(0))
+            ):
                 continue
             where, written = f"{shown}:{number}", comment.group(0)
             try:
@@ -404,6 +415,7 @@ def test_every_percentage_in_readme_and_docs_is_checked_or_says_why_not():
         ("<!-- table outlines: all good/cases% a -->\n| m | a |\n|--|--|\n| x | 95 % |", []),
         ("| m | a |\n|--|--|\n| x | 95 % |", ["doc.md:3: '95 %'"]),
         ("95%<!-- a comment -->", ["doc.md:1: '95%'"]),
+        ("95%<!-- unchecked: a parameter -->", []),
     ],
 )
 def test_unmarked_percentages_are_found(text, unmarked):
@@ -548,6 +560,7 @@ def test_other_comments_and_code_are_not_markers(root):
         "```markdown\n"
         "95.9 %<!-- outlines: sig-auto outline-clean all good/cases -->\n"
         "```\n"
+        "<!-- unchecked: the paper's figures -->\n"
         "<!--\n"
         "outlines: a comment over several lines\n"
         "-->\n"
