@@ -16,7 +16,8 @@
 //! Everything a user calls is re-exported here; the modules below document the algorithms
 //! (with their papers, guarantees and complexity) and hold the readers, writers and
 //! samplers. The main path runs one way: points → [`delaunay`] → [`proximity`] (SIGDT) →
-//! [`connect`] (inflate, sculpt, loops) → [`result`] → [`io`] writers.
+//! [`connect`] (inflate, sculpt, loops) → [`result`] (read back by the sampling check) →
+//! [`io`] writers.
 //!
 //! Evaluation metrics, the research samplers and pictures are in the `sigdt-lab` crate.
 
@@ -36,6 +37,7 @@ mod parallel;
 pub mod proximity;
 pub mod result;
 pub mod samplers;
+mod sampling_check;
 pub mod sig_auto;
 pub mod sig_connect2d;
 

@@ -12,7 +12,8 @@ use crate::connect::{inflate_and_sculpt_traced, trace::Trace};
 use crate::delaunay::Triangulation;
 use crate::error::Result;
 use crate::geometry::Point;
-use crate::result::{degenerate_result, diagnose, from_vertex_pairs, Reconstruction, Stats};
+use crate::result::{degenerate_result, from_vertex_pairs, Reconstruction, Stats};
+use crate::sampling_check::diagnose;
 use crate::{sig_auto, sig_connect2d};
 
 /// A reconstruction method. Spelled in kebab case on the command line and in Python

@@ -91,12 +91,13 @@ pub(crate) fn outline(
 
 impl Outline {
     /// The sampling check of the loops ([`check_curves`](crate::result::check_curves) and
-    /// [`noisy_area`](crate::result::noisy_area)), as [`diagnose`](crate::result::diagnose)
+    /// [`noisy_area`](crate::sampling_check::noisy_area)), as [`diagnose`](crate::sampling_check::diagnose)
     /// gives it for the same loops.
     pub(crate) fn check(&self, dt: &Triangulation) -> Vec<crate::result::Finding> {
-        let mut found = crate::result::check_curves(dt, self.loops.iter().map(|l| (l, true)));
+        let mut found =
+            crate::sampling_check::check_curves(dt, self.loops.iter().map(|l| (l, true)));
         let rings: Vec<&[u32]> = self.loops.iter().collect();
-        found.extend(crate::result::noisy_area(dt, &rings));
+        found.extend(crate::sampling_check::noisy_area(dt, &rings));
         found
     }
 

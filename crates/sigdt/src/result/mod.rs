@@ -3,23 +3,20 @@
 //! the loops grouped into polygons with holes.
 
 mod degenerate;
-mod ends_meet;
 mod from_edges;
-mod noisy_area;
 mod polygons;
-mod sampling_check;
 
 pub(crate) use degenerate::degenerate_result;
 pub(crate) use from_edges::{from_new_vertices, from_vertex_pairs};
-pub(crate) use noisy_area::noisy_area;
-pub use noisy_area::AREA_TOLERANCE;
-pub use polygons::Polygon;
-pub(crate) use sampling_check::{check_curves, diagnose, diagnose_with, doubling_back, Spacing};
+// The sampling check is a room of its own (`crate::sampling_check`); its findings are
+// part of every result, so their types are also named here.
+pub use crate::sampling_check::AREA_TOLERANCE;
 #[doc(hidden)]
-pub use sampling_check::{measure_curve, EdgeMeasure};
-pub use sampling_check::{
+pub use crate::sampling_check::{measure_curve, EdgeMeasure};
+pub use crate::sampling_check::{
     Finding, FindingKind, DEPTH_RATIO, LONG_EDGE_RATIO, MIN_LOOP_POINTS, STRAY_DEPTH_RATIO,
 };
+pub use polygons::Polygon;
 
 /// The [`LeftOut`] entries of points left inside when sculpting got stuck (input indices,
 /// sorted).

@@ -35,9 +35,8 @@
 use crate::baselines::connect2d::connect2d_on;
 use crate::delaunay::{Shape, Triangulation};
 use crate::geometry::{distance, Point};
-use crate::result::{
-    diagnose, FindingKind, LeftOutReason, Reconstruction, Status, Vertices, LONG_EDGE_RATIO,
-};
+use crate::result::{FindingKind, LeftOutReason, Reconstruction, Status, Vertices};
+use crate::sampling_check::{diagnose, LONG_EDGE_RATIO};
 use crate::sig_connect2d::sig_connect2d_on;
 use std::collections::HashSet;
 

@@ -45,7 +45,8 @@ use super::{sig_auto_with, Steps};
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, orient2d, segment_foot, segments_cross, Point};
 use crate::proximity::kdtree::KdTree;
-use crate::result::{check_curves, Finding, FindingKind, Status, MIN_LOOP_POINTS};
+use crate::result::Status;
+use crate::sampling_check::{check_curves, Finding, FindingKind, MIN_LOOP_POINTS};
 
 /// The thinning factors tried, coarsest last: the spacing of the coarse points in units of
 /// the median nearest-neighbour distance.

@@ -124,10 +124,10 @@ use crate::geometry::distance;
 use crate::proximity::nearest::nearest_vertex_distances;
 use crate::proximity::sigdt::TIE_SLACK;
 use crate::result::{
-    degenerate_result, diagnose, diagnose_with, from_vertex_pairs, inside_left_out, Finding,
-    FindingKind, LeftOut, LeftOutReason, Reconstruction, Spacing, Stats, Status, Vertices,
-    DEPTH_RATIO,
+    degenerate_result, from_vertex_pairs, inside_left_out, LeftOut, LeftOutReason, Reconstruction,
+    Stats, Status, Vertices,
 };
+use crate::sampling_check::{diagnose, diagnose_with, Finding, FindingKind, Spacing, DEPTH_RATIO};
 use crate::sig_connect2d::sig_connect2d_on;
 use chain_join::Chains;
 #[doc(hidden)]

@@ -17,7 +17,7 @@
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 use crate::delaunay::Triangulation;
-use crate::result::doubling_back;
+use crate::sampling_check::doubling_back;
 
 /// The most rounds of cutting (each round cuts every doubling-back vertex it finds).
 const MAX_ROUNDS: usize = 4;

@@ -50,12 +50,12 @@
 //! 6. **A sampled curve turns one way between its inflections**, and its curvature varies
 //!    slowly from sample to sample. Loops whose turns reverse at most of their points, with
 //!    curvature jumps that put the area they enclose in doubt by more than a twentieth, are
-//!    noise (or samples too sparse for their curve): `result/noisy_area.rs`, finding
+//!    noise (or samples too sparse for their curve): `sampling_check/noisy_area.rs`, finding
 //!    [`FindingKind::NoisyArea`].
 //!
 //! 7. **An open curve ends where its samples end** (property 4 again): two ends of open
 //!    paths nearer to each other than [`LONG_EDGE_RATIO`] times their longer last edge
-//!    could be joined by an edge like the others: `result/ends_meet.rs`, finding
+//!    could be joined by an edge like the others: `sampling_check/ends_meet.rs`, finding
 //!    [`FindingKind::EndsMeet`].
 //!
 //! Long straight sides between dense corners (glyphs, buildings) break u < 2 without being
@@ -72,9 +72,14 @@
 //! O(n) neighbour slots when the result left points out as outliers (property 5).
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
-use super::ends_meet::{ends_meet, PathEnd};
+mod ends_meet;
+mod noisy_area;
+
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, segment_distance};
+use ends_meet::{ends_meet, PathEnd};
+pub(crate) use noisy_area::noisy_area;
+pub use noisy_area::AREA_TOLERANCE;
 
 /// How far (in point spacings `max(r(a), r(b))`) a sample may reach into the disk with
 /// diameter `ab` before `ab` is reported: twice, the most that a sampling with u < 2 allows
@@ -144,11 +149,11 @@ pub enum FindingKind {
     /// edge than its length.
     OutliersOnCurve,
     /// Pairs of ends of open paths nearer to each other than [`LONG_EDGE_RATIO`] times their
-    /// longer last edge (`result/ends_meet.rs`): the curve may go on, or close, there.
+    /// longer last edge (`sampling_check/ends_meet.rs`): the curve may go on, or close, there.
     EndsMeet,
     /// Loops whose points scatter like noise (the turn reverses at most of them), by enough
     /// to make the area they enclose uncertain by more than a twentieth
-    /// (`result/noisy_area.rs`).
+    /// (`sampling_check/noisy_area.rs`).
     NoisyArea,
 }
 
@@ -467,17 +472,19 @@ fn check_curves_with<'a>(
 
 /// The findings of the sampling check on `rec`, a result on `dt`'s points (input indices);
 /// none for results whose vertices are not the input points, or without triangles.
-pub(crate) fn diagnose(dt: &Triangulation, rec: &super::Reconstruction) -> Vec<Finding> {
+pub(crate) fn diagnose(dt: &Triangulation, rec: &crate::result::Reconstruction) -> Vec<Finding> {
     diagnose_with(dt, rec, Spacing::Measured)
 }
 
 /// [`diagnose`], reading `r(v)` from `spacing`.
 pub(crate) fn diagnose_with(
     dt: &Triangulation,
-    rec: &super::Reconstruction,
+    rec: &crate::result::Reconstruction,
     spacing: Spacing,
 ) -> Vec<Finding> {
-    if rec.vertices != super::Vertices::Input || dt.shape() != crate::delaunay::Shape::Proper {
+    if rec.vertices != crate::result::Vertices::Input
+        || dt.shape() != crate::delaunay::Shape::Proper
+    {
         return Vec::new();
     }
     let vertex_of = dt.vertex_of_inputs();
@@ -491,7 +498,7 @@ pub(crate) fn diagnose_with(
     let outliers: Vec<u32> = rec
         .left_out
         .iter()
-        .filter(|l| l.reason == super::LeftOutReason::Outlier)
+        .filter(|l| l.reason == crate::result::LeftOutReason::Outlier)
         .map(|l| vertex_of[l.index])
         .collect();
     if !outliers.is_empty() {
@@ -502,7 +509,7 @@ pub(crate) fn diagnose_with(
     }
     let rings: Vec<&[u32]> =
         curves.iter().filter(|(_, closed)| *closed).map(|(c, _)| c.as_slice()).collect();
-    found.extend(super::noisy_area(dt, &rings));
+    found.extend(noisy_area(dt, &rings));
     found
 }
 
@@ -592,7 +599,7 @@ impl Tally {
 mod tests {
     use super::*;
     use crate::geometry::Point;
-    use crate::result::{diagnose, Reconstruction};
+    use crate::result::Reconstruction;
     use std::f64::consts::TAU;
 
     fn circle(n: usize) -> Vec<Point> {

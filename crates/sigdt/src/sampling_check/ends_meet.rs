@@ -15,7 +15,7 @@
 //! O(e · (d + log e)) for e path ends of mean Delaunay degree d.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
-use super::sampling_check::{Finding, FindingKind, LONG_EDGE_RATIO};
+use super::{Finding, FindingKind, LONG_EDGE_RATIO};
 use crate::delaunay::Triangulation;
 
 /// One end of an open path of a result.
@@ -61,7 +61,8 @@ pub(crate) fn ends_meet(dt: &Triangulation, ends: &[PathEnd]) -> Option<Finding>
 #[cfg(test)]
 mod tests {
     use crate::geometry::Point;
-    use crate::result::{diagnose, Finding, FindingKind, Reconstruction};
+    use crate::result::Reconstruction;
+    use crate::sampling_check::{diagnose, Finding, FindingKind};
     use std::f64::consts::TAU;
 
     fn circle(n: usize) -> Vec<Point> {

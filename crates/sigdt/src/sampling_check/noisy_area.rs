@@ -37,7 +37,7 @@
 //! # Complexity
 //! O(k) time for k loop vertices; O(L) memory for L loops until the turns say noise, then
 //! O(m) more for the largest loop of m vertices.
-use super::sampling_check::{Finding, FindingKind, MIN_LOOP_POINTS};
+use super::{Finding, FindingKind, MIN_LOOP_POINTS};
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, orient2d, Point};
 
