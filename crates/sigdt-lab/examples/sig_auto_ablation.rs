@@ -24,12 +24,12 @@ type Variant = (&'static str, fn(&mut SigAutoSteps));
 /// The rows.
 const VARIANTS: [Variant; 9] = [
     ("all steps (SIG-AUTO)", |_| {}),
-    ("no branch outliers (step 1)", |s| s.branch_outliers = false),
-    ("no shorter reading (CONNECT2D's)", |s| s.shorter_reading = false),
-    ("no paths for zigzag loops", |s| s.zigzag_paths = false),
-    ("no detour outliers (step 4)", |s| s.detours = false),
-    ("no isolated pieces (step 4)", |s| s.isolated = false),
-    ("no good continuation (step 5)", |s| s.continuation = false),
+    ("no branch outliers (step 6, tree)", |s| s.branch_outliers = false),
+    ("no second reading (step 9)", |s| s.shorter_reading = false),
+    ("no paths for zigzag loops (step 8)", |s| s.zigzag_paths = false),
+    ("no detour outliers (step 6, reading)", |s| s.detours = false),
+    ("no isolated pieces (step 6)", |s| s.isolated = false),
+    ("no good continuation (step 7)", |s| s.continuation = false),
     ("outlier rules without tangent rays", |s| s.tangent_rays = false),
     ("outlier rules without own curves", |s| s.own_curves = false),
 ];

@@ -90,7 +90,7 @@ pub(crate) fn outline(
 }
 
 impl Outline {
-    /// The sampling check of the loops ([`check_curves`](crate::result::check_curves) and
+    /// The sampling check of the loops ([`check_curves`](crate::sampling_check::check_curves) and
     /// [`noisy_area`](crate::sampling_check::noisy_area)), as [`diagnose`](crate::sampling_check::diagnose)
     /// gives it for the same loops.
     pub(crate) fn check(&self, dt: &Triangulation) -> Vec<crate::result::Finding> {

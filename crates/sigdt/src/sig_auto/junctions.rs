@@ -1,4 +1,4 @@
-//! Junctions (step 8 of SIG-AUTO): where curves meet, crossing (X), one ending on another
+//! Junctions (step 15 of SIG-AUTO): where curves meet, crossing (X), one ending on another
 //! (T) or several sharing an end (Y), read from the straightest pairs of SIGDT edges.
 //!
 //! Every vertex takes the pair of its SIGDT edges that runs straightest through it, when

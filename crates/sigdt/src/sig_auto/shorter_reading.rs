@@ -15,7 +15,7 @@
 //!
 //! - **shorter**: the polygon of a densely sampled closed curve is the shortest closed tour
 //!   through its samples ([Gie99], [AM00]), and
-//! - **turns less** in total: the good-continuation measure that step 5
+//! - **turns less** in total: the good-continuation measure that step 7
 //!   ([`continuation`](super::continuation)) lowers.
 //!
 //! The second reading is sought only when some vertex of the first turns by more than 60°,

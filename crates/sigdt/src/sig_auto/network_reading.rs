@@ -1,0 +1,80 @@
+//! Junction networks as the reading (step 15 of `docs/sig-auto.md`): where curves meet
+//! and the reading breaks beside a junction, the straightest pairs of SIGDT edges replace
+//! it there, when the sampling check finds them unbroken.
+use super::continuation::MAX_SAMPLED_TURN;
+use super::junctions::{self, Networks};
+use super::reading::Reading;
+use super::{curves_fail, finish, outlier_vertices};
+use crate::delaunay::{Shape, Triangulation};
+use crate::result::{Reconstruction, Stats, Status, Vertices};
+use crate::sampling_check::{diagnose_with, Spacing};
+
+/// `rec` with the pair graph in place of its reading on the components whose branching
+/// vertices are all junctions and where the reading breaks beside one (`junctions`),
+/// checked again; `None` when there is none, when a reading edge joins such a component to
+/// a point outside it, when `rec` is `noisy`, when points it left inside lie outside the
+/// networks, or when the sampling check finds the network broken.
+pub(super) fn network_reading(
+    dt: &Triangulation,
+    rec: &Reconstruction,
+    networks: &Networks,
+) -> Option<Reconstruction> {
+    // Where the reading zigzags like noise, pairs of edges run straight by chance.
+    if dt.shape() != Shape::Proper || rec.vertices != Vertices::Input || rec.status == Status::Noisy
+    {
+        return None;
+    }
+    let vertex_of = dt.vertex_of_inputs();
+    let read_pairs: Vec<[u32; 2]> =
+        rec.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
+    let reading = Reading::new(dt, &read_pairs);
+    let cos_limit = MAX_SAMPLED_TURN.cos();
+    let breaks = |v: u32| reading.degree(v) != 2 || reading.turns_more_than(v, cos_limit);
+    // Where the reading breaks nowhere, no network can replace it: the pair graph is not
+    // built (most curves).
+    let n = dt.num_vertices();
+    if !(0..n as u32).any(breaks) {
+        return None;
+    }
+    let (pairs, found) = networks.get();
+    if found.is_empty() {
+        return None;
+    }
+    let network = junctions::network_vertices(pairs, n, found, breaks);
+    let inside = |v: u32| network[v as usize];
+    if !network.contains(&true) || read_pairs.iter().any(|&[a, b]| inside(a) != inside(b)) {
+        return None;
+    }
+    // Points left inside a stuck reading are read by the network, or the result stays stuck.
+    if let Status::SculptingStuck { left_out } = &rec.status {
+        if !left_out.iter().all(|&i| inside(vertex_of[i])) {
+            return None;
+        }
+    }
+    let mut network: Vec<[u32; 2]> = read_pairs.into_iter().filter(|&[a, _]| !inside(a)).collect();
+    for v in (0..n as u32).filter(|&v| inside(v)) {
+        network.extend(pairs.edges_at(v));
+    }
+    let outliers: Vec<u32> =
+        outlier_vertices(rec, &vertex_of).into_iter().filter(|&v| !inside(v)).collect();
+    checked_network(dt, network, &outliers, rec.stats, networks)
+}
+
+/// The result whose edges are `pairs`, a network read from `networks`' junctions, with
+/// `outliers` left out, unless the sampling check finds it broken (it doubles back, or its
+/// edges reach over points): then it is no better read than the curves were.
+pub(super) fn checked_network(
+    dt: &Triangulation,
+    pairs: Vec<[u32; 2]>,
+    outliers: &[u32],
+    stats: Stats,
+    networks: &Networks,
+) -> Option<Reconstruction> {
+    let mut rec = finish(dt, pairs, Vec::new(), outliers, stats);
+    if rec.status == Status::Branching {
+        // Its branches are junctions read as such, not stray edges of a graph.
+        rec.status = Status::Network;
+    }
+    rec.diagnosis = diagnose_with(dt, &rec, Spacing::Known(networks.spacing()));
+    (!curves_fail(&rec.diagnosis)).then_some(rec)
+}
