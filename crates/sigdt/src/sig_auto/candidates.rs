@@ -40,7 +40,7 @@ use crate::sampling_check::{diagnose, LONG_EDGE_RATIO};
 use crate::sig_connect2d::sig_connect2d_on;
 use std::collections::HashSet;
 
-use super::{finish, outlier_vertices};
+use super::{finish, outlier_vertices, Kind};
 
 /// How far a reading is from the sampling it assumes (module docs); less is better.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -137,7 +137,7 @@ fn polygons_through_kept(
     let on_dt = |polygon: Reconstruction| {
         let pairs = polygon.edges.iter().map(|&[i, j]| [kept[i], kept[j]]).collect();
         let inside = polygon.left_out.iter().map(|l| dt.input_index(kept[l.index])).collect();
-        finish(dt, pairs, inside, &outliers, polygon.stats)
+        finish(dt, pairs, inside, &outliers, polygon.stats, Kind::Curves)
     };
     vec![on_dt(sig_connect2d_on(&sub, true)), on_dt(connect2d_on(&sub))]
 }

@@ -7,7 +7,7 @@ use super::junctions::Networks;
 use super::reading::Reading;
 use super::{
     finish, first_reading::read, network_reading, outlier_vertices, skipped_samples,
-    wired_outliers, Steps,
+    wired_outliers, Kind, Steps,
 };
 use crate::delaunay::Triangulation;
 use crate::result::{LeftOutReason, Reconstruction, Status};
@@ -50,10 +50,8 @@ pub(super) fn checked_reading(
             // Threaded through noisy points, the loops zigzag where the noise does: the
             // status says so (step 10's test), so that a noisy outline is never silent.
             let zigzags = Reading::new(dt, &pairs).zigzags(MAX_SAMPLED_TURN.cos());
-            let mut fine_rec = finish(dt, pairs, Vec::new(), &fine.outliers, rec.stats);
-            if zigzags && fine_rec.status.is_manifold() {
-                fine_rec.status = Status::Noisy;
-            }
+            let kind = if zigzags { Kind::Zigzags { open_too: false } } else { Kind::Curves };
+            let mut fine_rec = finish(dt, pairs, Vec::new(), &fine.outliers, rec.stats, kind);
             fine_rec.diagnosis = diagnose(dt, &fine_rec);
             fine_rec
         }
@@ -91,11 +89,12 @@ fn edited(
     outliers: &[u32],
 ) -> Reconstruction {
     let inside = rec.left_out.iter().filter(|l| l.reason == LeftOutReason::Inside);
-    let mut edit = finish(dt, pairs, inside.map(|l| l.index).collect(), outliers, rec.stats);
-    let readable = matches!(edit.status, Status::Polygon | Status::Polygons | Status::Curves);
-    if rec.status == Status::Noisy && readable {
-        edit.status = Status::Noisy;
-    }
+    let kind = match rec.status {
+        Status::Noisy => Kind::Zigzags { open_too: true },
+        _ => Kind::Curves,
+    };
+    let inside = inside.map(|l| l.index).collect();
+    let mut edit = finish(dt, pairs, inside, outliers, rec.stats, kind);
     edit.diagnosis = diagnose(dt, &edit);
     edit
 }

@@ -1,5 +1,6 @@
 //! A reading, given as vertex pairs of the triangulation, turned into SIG-AUTO's result:
-//! the points left out listed, and the status of what was read.
+//! the points left out listed, and the status of what was read. Every stage of SIG-AUTO
+//! ends here, so that the status is set in this one place.
 use crate::delaunay::Triangulation;
 use crate::result::{
     from_vertex_pairs, inside_left_out, LeftOut, LeftOutReason, Reconstruction, Stats, Status,
@@ -12,14 +13,29 @@ pub(super) fn outlier_vertices(rec: &Reconstruction, vertex_of: &[u32]) -> Vec<u
     outliers.map(|l| vertex_of[l.index]).collect()
 }
 
-/// The result of the reading `pairs` (vertices of `dt`), with the points left inside by
-/// sculpting (`inside`, input indices) and the outliers (vertices of `dt`) left out.
+/// What a reading is, beyond what its edges show; its status follows from both ([`finish`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Kind {
+    /// Curves read through the points.
+    Curves,
+    /// Curves whose edges zigzag somewhere (the test of step 10, which no sampled curve
+    /// fails): a polygon or polygons are `noisy`, and with `open_too` curves with open paths
+    /// too. A result stuck in sculpting stays `sculpting-stuck`.
+    Zigzags { open_too: bool },
+    /// A network read at its junctions (step 15): where it branches it is a `network`,
+    /// not a `branching` graph.
+    Network,
+}
+
+/// The result of the reading `pairs` (vertices of `dt`) of kind `kind`, with the points left
+/// inside by sculpting (`inside`, input indices) and the outliers (vertices of `dt`) left out.
 pub(super) fn finish(
     dt: &Triangulation,
     pairs: Vec<[u32; 2]>,
     mut inside: Vec<usize>,
     outliers: &[u32],
     stats: Stats,
+    kind: Kind,
 ) -> Reconstruction {
     let mut rec = from_vertex_pairs(dt, pairs, stats);
     inside.sort_unstable();
@@ -38,6 +54,15 @@ pub(super) fn finish(
         if on_loops + outliers.len() == dt.num_vertices() {
             rec.status = if rec.loops.len() == 1 { Status::Polygon } else { Status::Polygons };
         }
+    }
+    match kind {
+        Kind::Zigzags { open_too }
+            if rec.status.is_manifold() || (open_too && rec.status == Status::Curves) =>
+        {
+            rec.status = Status::Noisy;
+        }
+        Kind::Network if rec.status == Status::Branching => rec.status = Status::Network,
+        _ => {}
     }
     rec
 }

@@ -8,12 +8,14 @@ use super::continuation::{self, MAX_SAMPLED_TURN};
 use super::junctions::Networks;
 use super::reading::Reading;
 use super::spanning_forests::Forests;
-use super::{checked_network, finish, isolated, outliers, shorter_reading, Steps, MAX_ROUNDS};
+use super::{
+    checked_network, finish, isolated, outliers, shorter_reading, Kind, Steps, MAX_ROUNDS,
+};
 use crate::delaunay::Triangulation;
 use crate::geometry::distance;
 use crate::proximity::nearest::nearest_vertex_distances;
 use crate::proximity::sigdt::TIE_SLACK;
-use crate::result::{degenerate_result, Reconstruction, Stats, Status};
+use crate::result::{degenerate_result, Reconstruction, Stats};
 use crate::sig_connect2d::sig_connect2d_on;
 use std::borrow::Cow;
 
@@ -155,11 +157,8 @@ pub(super) fn read(
         let back = isolated::put_back(dt, &mut pairs, &isolated);
         outliers.retain(|v| back.binary_search(v).is_err());
         let inside: Vec<usize> = read.inside.iter().map(|&v| dt.input_index(whole(v))).collect();
-        let mut rec = finish(dt, pairs, inside, &outliers, read.stats);
-        if zigzags && matches!(rec.status, Status::Polygon | Status::Polygons | Status::Curves) {
-            rec.status = Status::Noisy;
-        }
-        return rec;
+        let kind = if zigzags { Kind::Zigzags { open_too: true } } else { Kind::Curves };
+        return finish(dt, pairs, inside, &outliers, read.stats, kind);
     }
     unreachable!("the last round always reads its points")
 }

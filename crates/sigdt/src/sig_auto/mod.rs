@@ -100,7 +100,7 @@ use crate::delaunay::{Shape, Triangulation};
 use crate::proximity::nearest::nearest_vertex_distances;
 use crate::result::{Reconstruction, Status};
 use checked_reading::{checked_reading, curves_fail, fails, with_skipped_samples};
-use finish::{finish, outlier_vertices};
+use finish::{finish, outlier_vertices, Kind};
 use junctions::Networks;
 use network_reading::{checked_network, network_reading};
 

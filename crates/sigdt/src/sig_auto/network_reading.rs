@@ -4,7 +4,7 @@
 use super::continuation::MAX_SAMPLED_TURN;
 use super::junctions::{self, Networks};
 use super::reading::Reading;
-use super::{curves_fail, finish, outlier_vertices};
+use super::{curves_fail, finish, outlier_vertices, Kind};
 use crate::delaunay::{Shape, Triangulation};
 use crate::result::{Reconstruction, Stats, Status, Vertices};
 use crate::sampling_check::{diagnose_with, Spacing};
@@ -70,11 +70,7 @@ pub(super) fn checked_network(
     stats: Stats,
     networks: &Networks,
 ) -> Option<Reconstruction> {
-    let mut rec = finish(dt, pairs, Vec::new(), outliers, stats);
-    if rec.status == Status::Branching {
-        // Its branches are junctions read as such, not stray edges of a graph.
-        rec.status = Status::Network;
-    }
+    let mut rec = finish(dt, pairs, Vec::new(), outliers, stats, Kind::Network);
     rec.diagnosis = diagnose_with(dt, &rec, Spacing::Known(networks.spacing()));
     (!curves_fail(&rec.diagnosis)).then_some(rec)
 }
