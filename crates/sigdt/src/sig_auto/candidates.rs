@@ -36,11 +36,11 @@ use crate::baselines::connect2d::connect2d_on;
 use crate::delaunay::{Shape, Triangulation};
 use crate::geometry::{distance, Point};
 use crate::result::{FindingKind, LeftOutReason, Reconstruction, Status, Vertices};
-use crate::sampling_check::{diagnose, LONG_EDGE_RATIO};
+use crate::sampling_check::LONG_EDGE_RATIO;
 use crate::sig_connect2d::sig_connect2d_on;
 use std::collections::HashSet;
 
-use super::{finish, outlier_vertices, Kind};
+use super::{finish, outlier_vertices, Facts, Kind};
 
 /// How far a reading is from the sampling it assumes (module docs); less is better.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -78,7 +78,8 @@ fn breaks(rec: &Reconstruction) -> usize {
 
 /// `rec`, SIG-AUTO's checked reading of `dt`, or the candidate polygon with the least misfit
 /// (module docs).
-pub(crate) fn best_reading(dt: &Triangulation, rec: Reconstruction) -> Reconstruction {
+pub(crate) fn best_reading(facts: &Facts, rec: Reconstruction) -> Reconstruction {
+    let dt = facts.dt;
     let settled = breaks(&rec) == 0 && rec.paths.is_empty();
     if settled
         || dt.shape() != Shape::Proper
@@ -97,7 +98,7 @@ pub(crate) fn best_reading(dt: &Triangulation, rec: Reconstruction) -> Reconstru
         rec.edges.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect();
     let (min_loops, max_loops) = (rec.loops.len(), rec.loops.len().max(1));
     let mut best = rec;
-    for mut candidate in polygons_through_kept(dt, &best, &vertex_of) {
+    for candidate in polygons_through_kept(facts, &best, &vertex_of) {
         if !candidate.paths.is_empty()
             || candidate.loops.len() < min_loops
             || candidate.loops.len() > max_loops
@@ -108,7 +109,6 @@ pub(crate) fn best_reading(dt: &Triangulation, rec: Reconstruction) -> Reconstru
         if new_uniformity > own_uniformity.max(LONG_EDGE_RATIO) {
             continue;
         }
-        candidate.diagnosis = diagnose(dt, &candidate);
         let misfit = Misfit::of(at, &candidate);
         if misfit.better_than(&best_misfit) {
             (best, best_misfit) = (candidate, misfit);
@@ -118,16 +118,22 @@ pub(crate) fn best_reading(dt: &Triangulation, rec: Reconstruction) -> Reconstru
 }
 
 /// The polygons of SIG-CONNECT2D and CONNECT2D through the points that `rec` keeps (the
-/// outliers it left out stay out), as results on `dt` (`vertex_of`: its vertex of each input
-/// index).
+/// outliers it left out stay out), as checked results on `facts.dt` (`vertex_of`: its
+/// vertex of each input index).
 fn polygons_through_kept(
-    dt: &Triangulation,
+    facts: &Facts,
     rec: &Reconstruction,
     vertex_of: &[u32],
 ) -> Vec<Reconstruction> {
+    let dt = facts.dt;
     let outliers = outlier_vertices(rec, vertex_of);
     if outliers.is_empty() {
-        return vec![sig_connect2d_on(dt, true), connect2d_on(dt)];
+        let on_dt = |polygon: Reconstruction| {
+            let pairs = polygon.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
+            let inside = polygon.left_out.iter().map(|l| l.index).collect();
+            finish(facts, pairs, inside, &[], polygon.stats, Kind::Curves)
+        };
+        return vec![on_dt(sig_connect2d_on(dt, true)), on_dt(connect2d_on(dt))];
     }
     let mut gone = vec![false; dt.num_vertices()];
     outliers.iter().for_each(|&v| gone[v as usize] = true);
@@ -137,7 +143,7 @@ fn polygons_through_kept(
     let on_dt = |polygon: Reconstruction| {
         let pairs = polygon.edges.iter().map(|&[i, j]| [kept[i], kept[j]]).collect();
         let inside = polygon.left_out.iter().map(|l| dt.input_index(kept[l.index])).collect();
-        finish(dt, pairs, inside, &outliers, polygon.stats, Kind::Curves)
+        finish(facts, pairs, inside, &outliers, polygon.stats, Kind::Curves)
     };
     vec![on_dt(sig_connect2d_on(&sub, true)), on_dt(connect2d_on(&sub))]
 }

@@ -3,31 +3,24 @@
 //! break, and the samples left out beside the curves put back.
 use super::coarse_reading;
 use super::continuation::MAX_SAMPLED_TURN;
-use super::junctions::Networks;
 use super::reading::Reading;
 use super::{
     finish, first_reading::read, network_reading, outlier_vertices, skipped_samples,
-    wired_outliers, Kind, Steps,
+    wired_outliers, Facts, Kind,
 };
-use crate::delaunay::Triangulation;
 use crate::result::{LeftOutReason, Reconstruction, Status};
-use crate::sampling_check::{diagnose, Finding, FindingKind, DEPTH_RATIO};
+use crate::sampling_check::{Finding, FindingKind, DEPTH_RATIO};
 
 /// The reading, checked, with the wired-in outliers cut and the coarse reading where the
 /// check finds the curves broken (steps 11–13 of the module docs).
-pub(super) fn checked_reading(
-    dt: &Triangulation,
-    steps: &Steps,
-    spacing: Option<&[f64]>,
-    networks: Option<&Networks>,
-) -> Reconstruction {
-    let mut rec = read(dt, steps, spacing, networks);
+pub(super) fn checked_reading(facts: &Facts) -> Reconstruction {
+    let (dt, steps) = (facts.dt, facts.steps);
+    let mut rec = read(facts);
     if rec.status == Status::Network {
-        return rec; // a whole network, checked already
+        return rec; // a whole network
     }
-    rec.diagnosis = diagnose(dt, &rec);
     if steps.wired_outliers && rec.diagnosis.iter().any(|f| f.kind == FindingKind::DoublesBack) {
-        if let Some(cut) = without_wired_outliers(dt, &rec) {
+        if let Some(cut) = without_wired_outliers(facts, &rec) {
             rec = cut;
         }
     }
@@ -36,14 +29,14 @@ pub(super) fn checked_reading(
     let broken = curves_fail(&rec.diagnosis) || matches!(rec.status, Status::SculptingStuck { .. });
     // Curves that meet break every reading through all points: where they read as a
     // network, that is the reading, and no coarser one is needed.
-    if let Some(network) = networks.filter(|_| broken).and_then(|n| network_reading(dt, &rec, n)) {
+    if let Some(network) = broken.then(|| network_reading(facts, &rec)).flatten() {
         return network;
     }
     if !(steps.coarse && broken) {
         return rec;
     }
     let left_out = outlier_vertices(&rec, &dt.vertex_of_inputs());
-    let Some(spacing) = spacing else { return rec };
+    let Some(spacing) = facts.spacing else { return rec };
     match coarse_reading::coarse_reading(dt, steps, &left_out, spacing) {
         Some(fine) => {
             let pairs = chain_pairs(fine.loops.iter().map(|l| (l.as_slice(), true)));
@@ -51,9 +44,7 @@ pub(super) fn checked_reading(
             // status says so (step 10's test), so that a noisy outline is never silent.
             let zigzags = Reading::new(dt, &pairs).zigzags(MAX_SAMPLED_TURN.cos());
             let kind = if zigzags { Kind::Zigzags { open_too: false } } else { Kind::Curves };
-            let mut fine_rec = finish(dt, pairs, Vec::new(), &fine.outliers, rec.stats, kind);
-            fine_rec.diagnosis = diagnose(dt, &fine_rec);
-            fine_rec
+            finish(facts, pairs, Vec::new(), &fine.outliers, rec.stats, kind)
         }
         None => rec,
     }
@@ -61,10 +52,11 @@ pub(super) fn checked_reading(
 
 /// `rec` with the points it left out as outliers that lie within the sampling of its curves
 /// put back (`skipped_samples`), checked again; `rec` itself when there are none.
-pub(super) fn with_skipped_samples(dt: &Triangulation, rec: Reconstruction) -> Reconstruction {
+pub(super) fn with_skipped_samples(facts: &Facts, rec: Reconstruction) -> Reconstruction {
     if !rec.diagnosis.iter().any(|f| f.kind == FindingKind::OutliersOnCurve) {
         return rec;
     }
+    let dt = facts.dt;
     let vertex_of = dt.vertex_of_inputs();
     let mut outliers = outlier_vertices(&rec, &vertex_of);
     outliers.sort_unstable();
@@ -76,14 +68,14 @@ pub(super) fn with_skipped_samples(dt: &Triangulation, rec: Reconstruction) -> R
         return rec;
     }
     outliers.retain(|v| back.binary_search(v).is_err());
-    edited(dt, &rec, reading.pairs(), &outliers)
+    edited(facts, &rec, reading.pairs(), &outliers)
 }
 
 /// The result of `pairs`, an edit of `rec`'s reading that left out `outliers` (vertices of
 /// `dt`), checked again. It keeps `rec`'s points left inside, and its status `noisy`: cutting
 /// an outlier out or putting a sample back does not straighten a zigzag elsewhere.
 fn edited(
-    dt: &Triangulation,
+    facts: &Facts,
     rec: &Reconstruction,
     pairs: Vec<[u32; 2]>,
     outliers: &[u32],
@@ -94,9 +86,7 @@ fn edited(
         _ => Kind::Curves,
     };
     let inside = inside.map(|l| l.index).collect();
-    let mut edit = finish(dt, pairs, inside, outliers, rec.stats, kind);
-    edit.diagnosis = diagnose(dt, &edit);
-    edit
+    finish(facts, pairs, inside, outliers, rec.stats, kind)
 }
 
 /// Whether `findings` say the reading's curves break the sampling condition by enough to
@@ -123,10 +113,11 @@ pub(super) fn fails(finding: &Finding) -> bool {
 
 /// `rec` with the points where it doubles back left out as outliers (`wired_outliers`),
 /// checked again; `None` when there is nothing to cut or sculpting got stuck.
-fn without_wired_outliers(dt: &Triangulation, rec: &Reconstruction) -> Option<Reconstruction> {
+fn without_wired_outliers(facts: &Facts, rec: &Reconstruction) -> Option<Reconstruction> {
     if matches!(rec.status, Status::SculptingStuck { .. }) {
         return None;
     }
+    let dt = facts.dt;
     let vertex_of = dt.vertex_of_inputs();
     let as_vertices = |c: &Vec<usize>| c.iter().map(|&i| vertex_of[i]).collect::<Vec<u32>>();
     let mut curves: Vec<(Vec<u32>, bool)> =
@@ -139,7 +130,7 @@ fn without_wired_outliers(dt: &Triangulation, rec: &Reconstruction) -> Option<Re
     let mut outliers = outlier_vertices(rec, &vertex_of);
     outliers.extend(cut);
     let pairs = chain_pairs(curves.iter().map(|(c, closed)| (c.as_slice(), *closed)));
-    Some(edited(dt, rec, pairs, &outliers))
+    Some(edited(facts, rec, pairs, &outliers))
 }
 
 /// The edges of vertex sequences, each closed (the last joins the first) or open.

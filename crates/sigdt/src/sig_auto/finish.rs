@@ -1,10 +1,11 @@
 //! A reading, given as vertex pairs of the triangulation, turned into SIG-AUTO's result:
 //! the points left out listed, and the status of what was read. Every stage of SIG-AUTO
 //! ends here, so that the status is set in this one place.
-use crate::delaunay::Triangulation;
+use super::Facts;
 use crate::result::{
     from_vertex_pairs, inside_left_out, LeftOut, LeftOutReason, Reconstruction, Stats, Status,
 };
+use crate::sampling_check::diagnose_with;
 
 /// The outliers `rec` left out, as vertices of its triangulation (`vertex_of` maps input
 /// indices to them).
@@ -27,16 +28,18 @@ pub(super) enum Kind {
     Network,
 }
 
-/// The result of the reading `pairs` (vertices of `dt`) of kind `kind`, with the points left
-/// inside by sculpting (`inside`, input indices) and the outliers (vertices of `dt`) left out.
+/// The result of the reading `pairs` (vertices of `facts.dt`) of kind `kind`, with the
+/// points left inside by sculpting (`inside`, input indices) and the outliers (vertices)
+/// left out, and the sampling check's findings on it.
 pub(super) fn finish(
-    dt: &Triangulation,
+    facts: &Facts,
     pairs: Vec<[u32; 2]>,
     mut inside: Vec<usize>,
     outliers: &[u32],
     stats: Stats,
     kind: Kind,
 ) -> Reconstruction {
+    let dt = facts.dt;
     let mut rec = from_vertex_pairs(dt, pairs, stats);
     inside.sort_unstable();
     rec.left_out = inside_left_out(&inside);
@@ -64,5 +67,6 @@ pub(super) fn finish(
         Kind::Network if rec.status == Status::Branching => rec.status = Status::Network,
         _ => {}
     }
+    rec.diagnosis = diagnose_with(dt, &rec, facts.check_spacing());
     rec
 }

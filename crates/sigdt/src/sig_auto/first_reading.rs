@@ -9,7 +9,7 @@ use super::junctions::Networks;
 use super::reading::Reading;
 use super::spanning_forests::Forests;
 use super::{
-    checked_network, finish, isolated, outliers, shorter_reading, Kind, Steps, MAX_ROUNDS,
+    checked_network, finish, isolated, outliers, shorter_reading, Facts, Kind, Steps, MAX_ROUNDS,
 };
 use crate::delaunay::Triangulation;
 use crate::geometry::distance;
@@ -19,14 +19,11 @@ use crate::result::{degenerate_result, Reconstruction, Stats};
 use crate::sig_connect2d::sig_connect2d_on;
 use std::borrow::Cow;
 
-/// SIG-AUTO's reading of `dt` at the points' own scale (steps 1–10 of the module docs).
-/// `spacing`: the nearest-neighbour distances of `dt`'s vertices, when it is proper.
-pub(super) fn read(
-    dt: &Triangulation,
-    steps: &Steps,
-    spacing: Option<&[f64]>,
-    networks: Option<&Networks>,
-) -> Reconstruction {
+/// SIG-AUTO's reading of `facts.dt` at the points' own scale (steps 1–10 of the module
+/// docs), checked.
+pub(super) fn read(facts: &Facts) -> Reconstruction {
+    let (dt, steps, spacing, networks) =
+        (facts.dt, facts.steps, facts.spacing, facts.networks.as_ref());
     if let Some(result) = degenerate_result(dt) {
         return result;
     }
@@ -83,7 +80,7 @@ pub(super) fn read(
                                 leaf_edges_added: forests.leaf_edges_added,
                                 ..Stats::default()
                             };
-                            match whole_network(dt, networks, stats) {
+                            match whole_network(facts, networks, stats) {
                                 Some(network) => return network,
                                 None => on_networks = None,
                             }
@@ -158,18 +155,18 @@ pub(super) fn read(
         outliers.retain(|v| back.binary_search(v).is_err());
         let inside: Vec<usize> = read.inside.iter().map(|&v| dt.input_index(whole(v))).collect();
         let kind = if zigzags { Kind::Zigzags { open_too: true } } else { Kind::Curves };
-        return finish(dt, pairs, inside, &outliers, read.stats, kind);
+        return finish(facts, pairs, inside, &outliers, read.stats, kind);
     }
     unreachable!("the last round always reads its points")
 }
 
 /// The pair graph as the reading of every point (when they are all on networks' curves),
 /// unless the sampling check finds it broken.
-fn whole_network(dt: &Triangulation, networks: &Networks, stats: Stats) -> Option<Reconstruction> {
+fn whole_network(facts: &Facts, networks: &Networks, stats: Stats) -> Option<Reconstruction> {
     let (pairs, _) = networks.get();
-    let n = dt.num_vertices() as u32;
+    let n = facts.dt.num_vertices() as u32;
     let edges = (0..n).flat_map(|v| pairs.edges_at(v)).collect();
-    checked_network(dt, edges, &[], stats, networks)
+    checked_network(facts, edges, &[], stats)
 }
 
 /// What reading the components of one round gave, in the vertex numbers of its

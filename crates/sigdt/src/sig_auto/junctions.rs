@@ -74,11 +74,6 @@ impl<'a> Networks<'a> {
         Networks { dt, spacing, built: std::cell::OnceCell::new() }
     }
 
-    /// Every vertex's nearest-neighbour distance.
-    pub fn spacing(&self) -> &'a [f64] {
-        self.spacing
-    }
-
     /// The pair graph and its junctions (sorted).
     pub fn get(&self) -> &(PairGraph, Vec<u32>) {
         self.built.get_or_init(|| {

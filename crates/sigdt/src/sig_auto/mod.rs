@@ -82,6 +82,7 @@ mod checked_reading;
 mod closed_component;
 mod coarse_reading;
 mod continuation;
+mod facts;
 mod finish;
 mod first_reading;
 mod isolated;
@@ -100,8 +101,8 @@ use crate::delaunay::{Shape, Triangulation};
 use crate::proximity::nearest::nearest_vertex_distances;
 use crate::result::{Reconstruction, Status};
 use checked_reading::{checked_reading, curves_fail, fails, with_skipped_samples};
+use facts::Facts;
 use finish::{finish, outlier_vertices, Kind};
-use junctions::Networks;
 use network_reading::{checked_network, network_reading};
 
 #[doc(hidden)]
@@ -130,27 +131,20 @@ pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
 /// first when it passes the check.
 #[doc(hidden)]
 pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
-    // Every vertex's nearest-neighbour distance, shared by the first round, the coarse
-    // reading and the junctions.
+    // Every vertex's nearest-neighbour distance, shared by every stage.
     let spacing = (dt.shape() == Shape::Proper).then(|| nearest_vertex_distances(dt));
-    let networks = match (steps.junctions, &spacing) {
-        (true, Some(spacing)) => Some(Networks::new(dt, spacing)),
-        _ => None,
-    };
-    let rec = checked_reading(dt, steps, spacing.as_deref(), networks.as_ref());
+    let facts = Facts::new(dt, steps, spacing.as_deref());
+    let rec = checked_reading(&facts);
     if rec.status == Status::Network {
         return rec;
     }
     let rec = match steps.skipped_samples {
-        true => with_skipped_samples(dt, rec),
+        true => with_skipped_samples(&facts, rec),
         false => rec,
     };
-    let rec = match networks.and_then(|networks| network_reading(dt, &rec, &networks)) {
-        Some(network) => network,
-        None => rec,
-    };
+    let rec = network_reading(&facts, &rec).unwrap_or(rec);
     match steps.candidates {
-        true => candidates::best_reading(dt, rec),
+        true => candidates::best_reading(&facts, rec),
         false => rec,
     }
 }

@@ -2,23 +2,19 @@
 //! and the reading breaks beside a junction, the straightest pairs of SIGDT edges replace
 //! it there, when the sampling check finds them unbroken.
 use super::continuation::MAX_SAMPLED_TURN;
-use super::junctions::{self, Networks};
+use super::junctions;
 use super::reading::Reading;
-use super::{curves_fail, finish, outlier_vertices, Kind};
-use crate::delaunay::{Shape, Triangulation};
+use super::{curves_fail, finish, outlier_vertices, Facts, Kind};
+use crate::delaunay::Shape;
 use crate::result::{Reconstruction, Stats, Status, Vertices};
-use crate::sampling_check::{diagnose_with, Spacing};
 
 /// `rec` with the pair graph in place of its reading on the components whose branching
 /// vertices are all junctions and where the reading breaks beside one (`junctions`),
 /// checked again; `None` when there is none, when a reading edge joins such a component to
 /// a point outside it, when `rec` is `noisy`, when points it left inside lie outside the
 /// networks, or when the sampling check finds the network broken.
-pub(super) fn network_reading(
-    dt: &Triangulation,
-    rec: &Reconstruction,
-    networks: &Networks,
-) -> Option<Reconstruction> {
+pub(super) fn network_reading(facts: &Facts, rec: &Reconstruction) -> Option<Reconstruction> {
+    let (dt, networks) = (facts.dt, facts.networks.as_ref()?);
     // Where the reading zigzags like noise, pairs of edges run straight by chance.
     if dt.shape() != Shape::Proper || rec.vertices != Vertices::Input || rec.status == Status::Noisy
     {
@@ -57,20 +53,18 @@ pub(super) fn network_reading(
     }
     let outliers: Vec<u32> =
         outlier_vertices(rec, &vertex_of).into_iter().filter(|&v| !inside(v)).collect();
-    checked_network(dt, network, &outliers, rec.stats, networks)
+    checked_network(facts, network, &outliers, rec.stats)
 }
 
 /// The result whose edges are `pairs`, a network read from `networks`' junctions, with
 /// `outliers` left out, unless the sampling check finds it broken (it doubles back, or its
 /// edges reach over points): then it is no better read than the curves were.
 pub(super) fn checked_network(
-    dt: &Triangulation,
+    facts: &Facts,
     pairs: Vec<[u32; 2]>,
     outliers: &[u32],
     stats: Stats,
-    networks: &Networks,
 ) -> Option<Reconstruction> {
-    let mut rec = finish(dt, pairs, Vec::new(), outliers, stats, Kind::Network);
-    rec.diagnosis = diagnose_with(dt, &rec, Spacing::Known(networks.spacing()));
+    let rec = finish(facts, pairs, Vec::new(), outliers, stats, Kind::Network);
     (!curves_fail(&rec.diagnosis)).then_some(rec)
 }
