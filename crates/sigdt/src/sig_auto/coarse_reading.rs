@@ -12,7 +12,8 @@
 //! 1. `s` = the median nearest-neighbour distance. For `f` in [`THINNING`] (2, 3, 4): keep
 //!    a subset of points at least `f · s` apart (greedy along the Hilbert curve: a
 //!    Poisson-disk sample that depends on the point set alone, spaced more evenly along a
-//!    curve than a random order gives), and read it with SIG-AUTO.
+//!    curve than a random order gives), and read it at its own scale (SIG-AUTO's steps
+//!    1–12 and 14: no coarser scale, networks or candidates).
 //! 2. The first coarse reading that is closed curves only (status `polygon` or `polygons`)
 //!    and passes the sampling check on its own points is used. Loops too small for a
 //!    sampled curve that hold only points the fine reading left out as outliers are dropped
@@ -41,7 +42,7 @@
 use crate::delaunay::brio::hilbert_order;
 use std::collections::HashMap;
 
-use super::{sig_auto_with, Steps};
+use super::{own_scale_reading, Steps};
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, orient2d, segment_foot, segments_cross, Point};
 use crate::proximity::kdtree::KdTree;
@@ -77,8 +78,6 @@ pub(super) fn coarse_reading(
     if !(spacing > 0.0 && spacing.is_finite()) {
         return None;
     }
-    // A coarse reading is used only when it is closed curves.
-    let inner = Steps { coarse: false, junctions: false, candidates: false, ..*steps };
     let order = hilbert_order(|v| dt.point(v), dt.num_vertices());
     for factor in THINNING {
         let radius = factor * spacing;
@@ -88,7 +87,8 @@ pub(super) fn coarse_reading(
         }
         let points: Vec<Point> = kept.iter().map(|&v| dt.point(v)).collect();
         let Ok(sub) = Triangulation::new(&points) else { continue };
-        let coarse = sig_auto_with(&sub, &inner);
+        // A coarse reading is used only when it is closed curves.
+        let coarse = own_scale_reading(&sub, steps);
         if !matches!(coarse.status, Status::Polygon | Status::Polygons) {
             continue;
         }

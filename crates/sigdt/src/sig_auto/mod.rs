@@ -149,5 +149,19 @@ pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
     }
 }
 
+/// Steps 1–12 and 14 on `dt`: the reading at the points' own scale, checked and mended,
+/// with no other scale, networks or candidates. The coarse reading (step 13) reads its
+/// thinned points with it.
+fn own_scale_reading(dt: &Triangulation, steps: &Steps) -> Reconstruction {
+    let steps = Steps { coarse: false, junctions: false, candidates: false, ..*steps };
+    let spacing = (dt.shape() == Shape::Proper).then(|| nearest_vertex_distances(dt));
+    let facts = Facts::new(dt, &steps, spacing.as_deref());
+    let rec = checked_reading(&facts);
+    match steps.skipped_samples {
+        true => with_skipped_samples(&facts, rec),
+        false => rec,
+    }
+}
+
 #[cfg(test)]
 mod tests;
