@@ -9,7 +9,15 @@ import numpy.typing as npt
 
 # One finding of the sampling check (``sigdt.Finding``).
 _Finding = TypedDict(
-    "_Finding", {"kind": str, "count": int, "worst": float, "at": int, "message": str}
+    "_Finding",
+    {
+        "kind": str,
+        "count": int,
+        "worst": float,
+        "at": int,
+        "point": list[float],
+        "message": str,
+    },
 )
 
 # What ``reconstruct`` hands over, by name (``python/sigdt/_result.py`` keeps it as is).

@@ -100,8 +100,8 @@ class Reconstruction:
         Why each point of ``left_out`` was left out, in the same order: ``"inside"``,
         ``"outlier"``, ``"eliminated"``, ``"non-conforming"`` or ``"unresolved"``.
     diagnosis : list of dict
-        What the sampling check found, as dicts with ``kind``, ``count``, ``worst``, ``at``
-        and ``message``: where the loops and paths break the sampling condition they
+        What the sampling check found, as dicts with ``kind``, ``count``, ``worst``, ``at``,
+        ``point`` (its coordinates) and ``message``: where the loops and paths break the sampling condition they
         assume, with how much and at which point. Empty when the result reads as a sampled curve. A non-empty list, like a warning
         status, comes with a :class:`sigdt.SigdtWarning`; see ``warns``.
     warns : bool

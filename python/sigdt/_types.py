@@ -124,13 +124,15 @@ class Finding(TypedDict):
     spacings, the sharpest turn in degrees, the size of the smallest loop, the last edge
     over the nearest distance, the smallest gap between ends over their last edge, the
     nearest outlier's distance over its spacing or the uncertain share of the area, at
-    input index ``at``;
-    ``message`` is the sentence front ends print."""
+    input index ``at``, whose coordinates are ``point``;
+    ``message`` is the sentence front ends print: what is wrong, near which coordinates,
+    and what to do."""
 
     kind: FindingKind
     count: int
     worst: float
     at: int
+    point: list[float]
     message: str
 
 

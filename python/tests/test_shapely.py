@@ -163,7 +163,10 @@ def test_to_wkt_and_to_geojson_take_every_name_the_core_gives():
         assert feature["properties"]["status"] == status
     reasons = list(typing.get_args(_types.LeftOutReason))
     kinds = typing.get_args(_types.FindingKind)
-    findings = [{"kind": k, "count": 1, "worst": 0.5, "at": 0, "message": ""} for k in kinds]
+    findings = [
+        {"kind": k, "count": 1, "worst": 0.5, "at": 0, "point": [0.0, 1.0], "message": ""}
+        for k in kinds
+    ]
     fields = {
         **square._fields,
         "left_out": np.arange(len(reasons), dtype=np.int64) % 4,

@@ -183,6 +183,7 @@ pub fn reconstruction<'py>(
         finding.set_item("count", f.count)?;
         finding.set_item("worst", f.worst)?;
         finding.set_item("at", f.at)?;
+        finding.set_item("point", f.point.to_vec())?;
         finding.set_item("message", f.to_string())?;
         diagnosis.append(finding)?;
     }
@@ -264,6 +265,14 @@ fn finding_from(finding: &Bound<'_, PyAny>) -> PyResult<Finding> {
         count: item(finding, "count")?.extract()?,
         worst: item(finding, "worst")?.extract()?,
         at: item(finding, "at")?.extract()?,
+        // Results kept from before findings had coordinates have none.
+        point: match finding.get_item("point")? {
+            Some(point) => match point.extract::<Vec<f64>>()?[..] {
+                [x, y] => [x, y],
+                _ => return Err(PyValueError::new_err("a finding's point is not [x, y]")),
+            },
+            None => [f64::NAN; 2],
+        },
     })
 }
 

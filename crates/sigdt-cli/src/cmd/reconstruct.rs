@@ -155,7 +155,7 @@ fn warnings(rec: &Reconstruction) {
         note(&format!("sigdt: warning: {}", rec.status));
     }
     for finding in &rec.diagnosis {
-        note(&format!("sigdt: warning: {finding}: the result may not be the points' curves"));
+        note(&format!("sigdt: warning: the result may not be the points' curves: {finding}"));
     }
     for (reason, count) in left_out_by_reason(rec) {
         note(&format!("sigdt: left out {count} point(s): {reason}"));

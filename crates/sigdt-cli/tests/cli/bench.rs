@@ -143,7 +143,8 @@ fn bench_judges_results_against_true_curves() {
     let json: serde_json::Value = serde_json::from_str(&json).unwrap();
     assert_eq!(json["folder"], ds);
     let rows = json["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 2 * 3 * 3, "2 methods x (2 categories, all) x (all, 2 halves)");
+    let groups = "2 methods x (2 categories, manifold eps<1, all) x (all, 2 halves)";
+    assert_eq!(rows.len(), 2 * 4 * 3, "{groups}");
     let find = |method: &str, category: &str, half: &str| {
         let key = |r: &&serde_json::Value| {
             r["method"] == method && r["category"] == category && r["half"] == half

@@ -37,7 +37,7 @@ pub(crate) fn ends_meet(dt: &Triangulation, ends: &[PathEnd]) -> Option<Finding>
     let mut by_vertex: Vec<PathEnd> = ends.to_vec();
     by_vertex.sort_unstable_by_key(|e| e.end);
     let lookup = |v: u32| by_vertex.binary_search_by_key(&v, |e| e.end).ok().map(|k| by_vertex[k]);
-    let (mut count, mut worst, mut at) = (0, f64::INFINITY, usize::MAX);
+    let (mut count, mut worst, mut at, mut vertex) = (0, f64::INFINITY, usize::MAX, u32::MAX);
     for a in &by_vertex {
         for h in dt.incident(a.end) {
             let Some(b) = lookup(dt.other(h, a.end)) else { continue };
@@ -48,14 +48,19 @@ pub(crate) fn ends_meet(dt: &Triangulation, ends: &[PathEnd]) -> Option<Finding>
             let ratio = dt.length(h) / a.last.max(b.last);
             if ratio < LONG_EDGE_RATIO {
                 count += 1;
-                let index = dt.input_index(a.end).min(dt.input_index(b.end));
+                let nearer =
+                    if dt.input_index(a.end) < dt.input_index(b.end) { a.end } else { b.end };
+                let index = dt.input_index(nearer);
                 if ratio < worst || (ratio == worst && index < at) {
-                    (worst, at) = (ratio, index);
+                    (worst, at, vertex) = (ratio, index, nearer);
                 }
             }
         }
     }
-    (count > 0).then_some(Finding { kind: FindingKind::EndsMeet, count, worst, at })
+    (count > 0).then(|| {
+        let point = super::given_point(dt, vertex);
+        Finding { kind: FindingKind::EndsMeet, count, worst, at, point }
+    })
 }
 
 #[cfg(test)]

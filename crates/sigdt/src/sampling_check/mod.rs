@@ -126,6 +126,8 @@ pub struct Finding {
     /// Input index of a point where the worst value is (an end of the edge, or the vertex
     /// that turns).
     pub at: usize,
+    /// The coordinates of point [`at`](Self::at), as given: where to look.
+    pub point: [f64; 2],
 }
 
 /// The kinds of [`Finding`].
@@ -173,55 +175,107 @@ impl FindingKind {
     }
 }
 
+/// A finding in words a user acts on: what is wrong, where (the coordinates of the worst
+/// place, as given) and what to do about it.
 impl std::fmt::Display for Finding {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let near = Near(self.point);
+        let (count, worst) = (self.count, self.worst);
         match self.kind {
             FindingKind::PassesOverSamples => write!(
                 f,
-                "{} edge(s) pass over other points (up to {:.1} point spacings into the edge's \
-                 diametral disk, at point {}; a sampled curve allows less than \
-                 {STRAY_DEPTH_RATIO}, or {DEPTH_RATIO} for a corner's neighbour)",
-                self.count, self.worst, self.at
+                "{count} edge(s) pass over other points (worst near {near}, reaching {} point \
+                 spacings into the edge's diametral disk where a sampled curve allows less \
+                 than {STRAY_DEPTH_RATIO}): the points are too sparse or too noisy there to \
+                 tell which way the curve runs; densify the source lines there",
+                Spacings(worst)
             ),
             FindingKind::DoublesBack => write!(
                 f,
-                "the curve doubles back through far points at {} point(s) (worst a turn of \
-                 {:.0} degrees at point {})",
-                self.count, self.worst, self.at
+                "the curve runs out to a far point and back at {count} point(s) (worst near \
+                 {near}, a turn of {worst:.0} degrees): probably an outlier wired in; remove \
+                 it if it is no part of the shape"
             ),
             FindingKind::SmallLoops => write!(
                 f,
-                "{} loop(s) of fewer than {MIN_LOOP_POINTS} points, the smallest of {} at point {} \
-                 (a closed curve sampled within the condition has at least {MIN_LOOP_POINTS})",
-                self.count, self.worst, self.at
+                "{count} loop(s) of fewer than {MIN_LOOP_POINTS} points beside larger curves \
+                 (the smallest, of {worst} points, near {near}; a closed curve sampled densely \
+                 enough has at least {MIN_LOOP_POINTS}): noise, or points sparser than the \
+                 curve's detail; check them, or densify the source lines there"
             ),
             FindingKind::OpenEnds => write!(
                 f,
-                "{} open end(s) stop next to other points (worst at point {}: its last edge is \
-                 {:.1}x the distance to its nearest point; the curve may go on there)",
-                self.count, self.at, self.worst
+                "{count} open end(s) stop next to other points (worst near {near}: its last \
+                 edge is {worst:.1}x the distance to its nearest point): the curve may go on \
+                 there; if the points outline areas, densify their long sides"
             ),
             FindingKind::OutliersOnCurve => write!(
                 f,
-                "{} point(s) left out as outliers lie on or near the curves (worst at point {}, \
-                 {:.2} of the point spacing from them; an outlier lies farther off than the \
-                 curve's spacing)",
-                self.count, self.at, self.worst
+                "{count} point(s) left out as outliers lie on or near the curves (worst near \
+                 {near}, {worst:.2} of the point spacing from them, where an outlier lies \
+                 farther off than the spacing): they may be samples of the curve; check them"
             ),
             FindingKind::EndsMeet => write!(
                 f,
-                "{} pair(s) of open ends lie less than {LONG_EDGE_RATIO} last edges apart (worst \
-                 at point {}, {:.1} last edges): the curve may go on, or close, there",
-                self.count, self.at, self.worst
+                "{count} pair(s) of open ends lie less than {LONG_EDGE_RATIO} last edges apart \
+                 (worst near {near}, {worst:.1} last edges): the curve may go on, or close, \
+                 there; if the points outline areas, densify their long sides"
             ),
             FindingKind::NoisyArea => write!(
                 f,
-                "{} loop(s) scatter like noise (their turns reverse at most points; worst near \
-                 point {}): the area they enclose is uncertain by about {:.0} %",
-                self.count,
-                self.at,
-                100.0 * self.worst
+                "{count} loop(s) scatter like noise (their turns reverse at most points, as \
+                 noisy points or a coarsely digitised border do; worst near {near}): if the \
+                 points are noisy samples, the area they enclose is uncertain by about {:.0} %; \
+                 if they are exact vertices, only the order they are joined in is in doubt",
+                100.0 * worst
             ),
+        }
+    }
+}
+
+/// Coordinates in a message: six significant digits, enough to find the place.
+struct Near([f64; 2]);
+
+impl std::fmt::Display for Near {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let [x, y] = self.0;
+        write!(f, "({}, {})", Significant(x), Significant(y))
+    }
+}
+
+/// A number to six significant digits, without trailing zeros.
+struct Significant(f64);
+
+impl std::fmt::Display for Significant {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        if !x.is_finite() || x == 0.0 {
+            return write!(f, "{x}");
+        }
+        let magnitude = x.abs().log10().floor() as i32;
+        if !(-4..15).contains(&magnitude) {
+            return write!(f, "{x:.5e}");
+        }
+        let decimals = (5 - magnitude).max(0) as usize;
+        let text = format!("{x:.decimals$}");
+        let text = if text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            &text
+        };
+        write!(f, "{text}")
+    }
+}
+
+/// A depth in point spacings; beyond a thousand the number says nothing more (a point next
+/// to a near-duplicate has a spacing close to zero).
+struct Spacings(f64);
+
+impl std::fmt::Display for Spacings {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.0 {
+            d if d > 1000.0 => write!(f, "more than 1000"),
+            d => write!(f, "{d:.1}"),
         }
     }
 }
@@ -438,23 +492,24 @@ fn check_curves_with<'a>(
                 let last = distance(dt.point(end), dt.point(next));
                 let ratio = last / spacing.at(dt, end);
                 if ratio > 2.0 {
-                    ends.add(ratio, input(end));
+                    ends.add(dt, ratio, end);
                 }
                 path_ends.push(PathEnd { end, next, last });
             }
         }
         if closed && curve.len() < MIN_LOOP_POINTS {
-            let smallest = curve.iter().map(|&v| input(v)).min().unwrap_or(0);
-            small.add(-(curve.len() as f64), smallest);
+            if let Some(&smallest) = curve.iter().min_by_key(|&&v| input(v)) {
+                small.add(dt, -(curve.len() as f64), smallest);
+            }
         }
         has_large_curve |= curve.len() >= MIN_LOOP_POINTS;
         for (k, degrees) in doubling_back_with(dt, curve, closed, spacing) {
-            back.add(degrees, input(curve[k]));
+            back.add(dt, degrees, curve[k]);
         }
         measure_curve_with(dt, curve, closed, spacing, |m| {
             let allowed = if m.by_neighbour { DEPTH_RATIO } else { STRAY_DEPTH_RATIO };
             if m.depth >= allowed {
-                over.add(m.depth, input(m.ends[0]).min(input(m.ends[1])));
+                over.add(dt, m.depth, *m.ends.iter().min_by_key(|&&v| input(v)).unwrap());
             }
         });
     }
@@ -464,7 +519,7 @@ fn check_curves_with<'a>(
     let mut found: Vec<Finding> = [over, back, small, ends]
         .into_iter()
         .filter(|t| t.count > 0)
-        .map(|t| t.finding())
+        .map(|t| t.finding(dt))
         .collect();
     found.extend(ends_meet(dt, &path_ends));
     found
@@ -504,7 +559,7 @@ pub(crate) fn diagnose_with(
     if !outliers.is_empty() {
         let on_curve = outliers_on_curve(dt, &outliers, &curves, spacing);
         if on_curve.count > 0 {
-            found.push(on_curve.finding());
+            found.push(on_curve.finding(dt));
         }
     }
     let rings: Vec<&[u32]> =
@@ -559,7 +614,7 @@ fn outliers_on_curve(
         }
         if nearest < 0.5 || within_spacing {
             // Negated, so that the nearest is the worst.
-            tally.add(-nearest, dt.input_index(v));
+            tally.add(dt, -nearest, v);
         }
     }
     tally
@@ -572,27 +627,37 @@ struct Tally {
     count: usize,
     worst: f64,
     at: usize,
+    /// The vertex of `at`.
+    vertex: u32,
 }
 
 impl Tally {
     fn new(kind: FindingKind) -> Tally {
-        Tally { kind, count: 0, worst: f64::NEG_INFINITY, at: usize::MAX }
+        Tally { kind, count: 0, worst: f64::NEG_INFINITY, at: usize::MAX, vertex: u32::MAX }
     }
 
-    fn add(&mut self, value: f64, at: usize) {
+    /// Counts `value`, found at vertex `v` of `dt`.
+    fn add(&mut self, dt: &Triangulation, value: f64, v: u32) {
         self.count += 1;
+        let at = dt.input_index(v);
         if value > self.worst || (value == self.worst && at < self.at) {
-            (self.worst, self.at) = (value, at);
+            (self.worst, self.at, self.vertex) = (value, at, v);
         }
     }
 
-    fn finding(&self) -> Finding {
+    fn finding(&self, dt: &Triangulation) -> Finding {
         // Small loops keep the negated size, outliers on curves the negated distance, so
         // that the smallest is the worst.
         let negated = matches!(self.kind, FindingKind::SmallLoops | FindingKind::OutliersOnCurve);
         let worst = if negated { -self.worst } else { self.worst };
-        Finding { kind: self.kind, count: self.count, worst, at: self.at }
+        let point = given_point(dt, self.vertex);
+        Finding { kind: self.kind, count: self.count, worst, at: self.at, point }
     }
+}
+
+/// The coordinates of vertex `v` of `dt` as the caller gave them.
+pub(crate) fn given_point(dt: &Triangulation, v: u32) -> [f64; 2] {
+    dt.unscale(dt.point(v))
 }
 
 #[cfg(test)]
@@ -838,9 +903,26 @@ mod tests {
     }
 
     #[test]
-    fn the_message_says_where_and_how_much() {
+    fn the_message_says_where_how_much_and_what_to_do() {
+        // Point 40 of the knot is 5 + 0.1 · (cos 0, sin 0) = (5.1, 0): its coordinates, as
+        // given, are in the finding and the message.
         let found = knot_beside_a_circle(5);
+        assert_eq!((found[0].at, found[0].point), (40, [5.1, 0.0]));
         let text = found[0].to_string();
-        assert!(text.contains("fewer than 7 points") && text.contains("at point 40"), "{text}");
+        assert!(text.contains("fewer than 7 points") && text.contains("near (5.1, 0)"), "{text}");
+        assert!(text.contains("densify the source lines there"), "{text}");
+    }
+
+    #[test]
+    fn numbers_in_messages_stay_readable() {
+        let shown = |x: f64| Significant(x).to_string();
+        assert_eq!(shown(136.125_41), "136.125");
+        assert_eq!(shown(-17.464_318), "-17.4643");
+        assert_eq!(shown(523_456.789), "523457");
+        assert_eq!(shown(0.000_123_456_7), "0.000123457");
+        assert_eq!(shown(2.5e-7), "2.50000e-7");
+        assert_eq!(shown(0.0), "0");
+        assert_eq!(Spacings(1.5e15).to_string(), "more than 1000");
+        assert_eq!(Spacings(10.71).to_string(), "10.7");
     }
 }

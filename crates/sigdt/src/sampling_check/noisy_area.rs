@@ -100,6 +100,7 @@ pub(crate) fn noisy_area(dt: &Triangulation, rings: &[&[u32]]) -> Option<Finding
         count: noisy.len(),
         worst: share,
         at: dt.input_index(worst.worst_vertex),
+        point: super::given_point(dt, worst.worst_vertex),
     })
 }
 

@@ -385,7 +385,8 @@ mod tests {
     /// outliers, only when the fine reading had left every one of them out already.
     #[test]
     fn small_coarse_loops_of_known_outliers_are_dropped() {
-        let small_loops = Finding { kind: FindingKind::SmallLoops, count: 1, worst: 3.0, at: 7 };
+        let small_loops =
+            Finding { kind: FindingKind::SmallLoops, count: 1, worst: 3.0, at: 7, point: [0.0; 2] };
         let curve: Vec<u32> = (10..40).collect();
         let loops = || vec![vec![7, 8, 9], curve.clone()];
         let (kept, settled) = passing_loops(loops(), &[small_loops], &[7, 8, 9, 50]).unwrap();
@@ -393,7 +394,13 @@ mod tests {
         // One of the small loop's points is a curve point: the level fails.
         assert!(passing_loops(loops(), &[small_loops], &[7, 9]).is_none());
         // Another failing finding: the level fails whatever the loops.
-        let sliver = Finding { kind: FindingKind::DoublesBack, count: 1, worst: 170.0, at: 12 };
+        let sliver = Finding {
+            kind: FindingKind::DoublesBack,
+            count: 1,
+            worst: 170.0,
+            at: 12,
+            point: [0.0; 2],
+        };
         assert!(passing_loops(loops(), &[small_loops, sliver], &[7, 8, 9]).is_none());
         // Nothing fails: every loop is kept.
         assert_eq!(passing_loops(loops(), &[], &[]).unwrap().0.len(), 2);

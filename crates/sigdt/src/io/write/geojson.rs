@@ -94,12 +94,14 @@ pub(super) fn geojson(
 
 /// One finding of the sampling check as a JSON object: `kind`, `count`, `worst` (a number
 /// written as the coordinates are, always with a fraction or an exponent; `null` if it is
-/// not finite), `at` (an input index) and the `message` front ends print.
+/// not finite), `at` (an input index), `point` (its coordinates, as given) and the
+/// `message` front ends print.
 fn finding_object(f: &Finding) -> String {
     let message = json_text(&f.to_string());
-    let worst = if f.worst.is_finite() { format!("{:?}", f.worst) } else { "null".into() };
+    let number = |x: f64| if x.is_finite() { format!("{x:?}") } else { "null".into() };
+    let (worst, [x, y]) = (number(f.worst), f.point.map(number));
     format!(
-        r#"{{"kind": "{}", "count": {}, "worst": {worst}, "at": {}, "message": "{message}"}}"#,
+        r#"{{"kind": "{}", "count": {}, "worst": {worst}, "at": {}, "point": [{x}, {y}], "message": "{message}"}}"#,
         f.kind.name(),
         f.count,
         f.at

@@ -287,10 +287,11 @@ mod tests {
             count: 1,
             worst: 3.0,
             at: 0,
+            point: [0.0, 0.0],
         };
         let flagged = Reconstruction { diagnosis: vec![finding], ..self::square() };
         let flagged = text(GeoJson, &SQUARE, &flagged);
-        let diagnosis = r#""warning": true, "diagnosis": [{"kind": "small-loops", "count": 1, "worst": 3.0, "at": 0, "message": "1 loop(s) of fewer than 7 points"#;
+        let diagnosis = r#""warning": true, "diagnosis": [{"kind": "small-loops", "count": 1, "worst": 3.0, "at": 0, "point": [0.0, 0.0], "message": "1 loop(s) of fewer than 7 points"#;
         assert!(flagged.contains(diagnosis), "{flagged}");
     }
 }
