@@ -23,7 +23,7 @@
 use super::{Reconstruction, Stats, Status, Vertices};
 use crate::delaunay::Triangulation;
 use crate::geometry::{orient2d, Point};
-use crate::graph::chains;
+use crate::graph::{chains, chains_of_slots, two_slots};
 
 /// The result whose edges are the vertex pairs `pairs` of `dt` (any order, repeats and
 /// self-pairs ignored), with `stats` as given except the point counts, filled in here.
@@ -34,7 +34,12 @@ pub(crate) fn from_vertex_pairs(
 ) -> Reconstruction {
     let mut rec =
         from_pairs(dt.num_vertices(), pairs, |v| dt.point(v as u32), |v| dt.input_index(v as u32));
-    rec.edges = dt.to_input_edges(rec.edges.iter().map(|&[a, b]| [a as u32, b as u32]));
+    // In place: a million-point result holds 16 MB of edges.
+    for edge in &mut rec.edges {
+        let (i, j) = (dt.input_index(edge[0] as u32), dt.input_index(edge[1] as u32));
+        *edge = [i.min(j), i.max(j)];
+    }
+    rec.edges.sort_unstable();
     stats.points = dt.input_len();
     stats.distinct_points = dt.num_vertices();
     Reconstruction { duplicates: dt.duplicates().to_vec(), stats, ..rec }
@@ -70,22 +75,30 @@ fn from_pairs(
     point: impl Fn(usize) -> Point,
     label: impl Fn(usize) -> usize,
 ) -> Reconstruction {
-    let mut edges: Vec<[usize; 2]> = pairs
-        .into_iter()
-        .filter(|[a, b]| a != b)
-        .map(|[a, b]| [a.min(b) as usize, a.max(b) as usize])
-        .collect();
-    edges.sort_unstable();
-    edges.dedup();
-    let mut degree = vec![0usize; n];
-    edges.iter().flatten().for_each(|&v| degree[v] += 1);
+    // Sorted and distinct, in place and as `u32`: a million-point result is read in about
+    // 40 MB, and its `usize` edges are made last.
+    let mut pairs = pairs;
+    pairs.retain(|[a, b]| a != b);
+    pairs.iter_mut().for_each(|p| *p = [p[0].min(p[1]), p[0].max(p[1])]);
+    pairs.sort_unstable();
+    pairs.dedup();
+    // Paths and cycles (most results) are walked from two neighbour slots a vertex.
+    let (chains, max_degree) = match two_slots(n, pairs.iter().copied()) {
+        Some(slots) => (chains_of_slots(&slots), 2),
+        None => {
+            let edges: Vec<[usize; 2]> =
+                pairs.iter().map(|&[a, b]| [a as usize, b as usize]).collect();
+            (chains(n, &edges, None), 3)
+        }
+    };
     let (mut loops, mut paths) = (Vec::new(), Vec::new());
-    for chain in chains(n, &edges, None) {
+    for chain in chains {
         if chain.cycle {
             loops.push(ccw_loop(&point, &label, chain.vertices));
             continue;
         }
-        let mut p: Vec<usize> = chain.vertices.into_iter().map(&label).collect();
+        let mut p = chain.vertices;
+        p.iter_mut().for_each(|v| *v = label(*v));
         // Open paths start at their smaller end; a path closing through a junction starts
         // there and runs towards its smaller neighbour.
         if p.first() > p.last() || (p.first() == p.last() && p[1] > p[p.len() - 2]) {
@@ -95,7 +108,8 @@ fn from_pairs(
     }
     loops.sort_unstable();
     paths.sort_unstable();
-    let max_degree = degree.iter().copied().max().unwrap_or(0);
+    let edges: Vec<[usize; 2]> = pairs.iter().map(|&[a, b]| [a as usize, b as usize]).collect();
+    drop(pairs);
     let on_loops: usize = loops.iter().map(Vec::len).sum();
     let status = if max_degree > 2 {
         Status::Branching
@@ -128,7 +142,8 @@ fn ccw_loop(
         })
         .unwrap_or(0);
     let clockwise = k >= 3 && orient2d(at(lowest + k - 1), at(lowest), at(lowest + 1)) < 0.0;
-    let mut indices: Vec<usize> = cycle.into_iter().map(label).collect();
+    let mut indices = cycle;
+    indices.iter_mut().for_each(|v| *v = label(*v));
     if clockwise {
         indices.reverse();
     }

@@ -28,7 +28,9 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
         return result;
     }
     // Vertices of `dt` still read, and those left out as outliers so far.
-    let mut kept: Vec<u32> = (0..dt.num_vertices() as u32).collect();
+    // (`None`: every vertex, until the first round leaves some out.)
+    let mut kept: Option<Vec<u32>> = None;
+    let n = dt.num_vertices() as u32;
     let mut outliers: Vec<u32> = Vec::new();
     // The last round's reading with its detours cut out and their ends joined (vertices of
     // `dt`), kept in case reading the rest again gets stuck where it did not.
@@ -43,6 +45,7 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
         let sub = if round == 0 {
             dt
         } else {
+            let kept = kept.as_deref().unwrap_or_default();
             let points: Vec<_> = kept.iter().map(|&v| dt.point(v)).collect();
             match Triangulation::new(&points) {
                 Ok(t) => subset = t,
@@ -51,7 +54,10 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
             &subset
         };
         // Vertex of `sub` -> vertex of `dt` (the same in the first round).
-        let whole = |v: u32| if round == 0 { v } else { kept[sub.input_index(v)] };
+        let whole = |v: u32| match &kept {
+            Some(kept) if round > 0 => kept[sub.input_index(v)],
+            _ => v,
+        };
         let read = match degenerate_result(sub) {
             Some(line) => {
                 Read { pairs: sub.line_edges().collect(), inside: Vec::new(), stats: line.stats }
@@ -101,7 +107,7 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
                         let gone: Vec<u32> = found.iter().map(|&v| whole(v)).collect();
                         outliers.extend(&gone);
                         let gone: std::collections::HashSet<u32> = gone.into_iter().collect();
-                        kept.retain(|v| !gone.contains(v));
+                        kept.get_or_insert_with(|| (0..n).collect()).retain(|v| !gone.contains(v));
                         continue;
                     }
                 }
@@ -137,7 +143,7 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
                 relinked = Some((pairs.collect(), read.stats));
             }
             let gone: std::collections::HashSet<u32> = cut.iter().copied().collect();
-            kept.retain(|v| !gone.contains(v));
+            kept.get_or_insert_with(|| (0..n).collect()).retain(|v| !gone.contains(v));
             outliers.extend(cut);
             continue;
         }
@@ -151,11 +157,15 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
         let zigzags = reading.zigzags(MAX_SAMPLED_TURN.cos());
         let mut pairs: Vec<[u32; 2]> =
             reading.pairs().into_iter().map(|[a, b]| [whole(a), whole(b)]).collect();
+        // Freed before the result is built: its peak is SIG-AUTO's.
+        drop(reading);
+        let Read { pairs: read_pairs, inside, stats } = read;
+        drop(read_pairs);
         let back = isolated::put_back(dt, &mut pairs, &isolated);
         outliers.retain(|v| back.binary_search(v).is_err());
-        let inside: Vec<usize> = read.inside.iter().map(|&v| dt.input_index(whole(v))).collect();
+        let inside: Vec<usize> = inside.iter().map(|&v| dt.input_index(whole(v))).collect();
         let kind = if zigzags { Kind::Zigzags { open_too: true } } else { Kind::Curves };
-        return finish(facts, pairs, inside, &outliers, read.stats, kind);
+        return finish(facts, pairs, inside, &outliers, stats, kind);
     }
     unreachable!("the last round always reads its points")
 }
@@ -201,16 +211,18 @@ fn branches_far_off(
 /// Steps 2–5 of the module docs on every component of `dt`.
 fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read {
     let join_ratio = steps.join_ratio;
-    let (graph, sigdt, tree) = (&forests.graph, &forests.sigdt, &forests.sigdt2);
+    let (graph, sigdt, tree) = (&forests.graph, forests.sigdt(), &forests.sigdt2);
     let mut stats = Stats {
         graph_edges: graph.len(),
         leaf_edges_added: forests.leaf_edges_added,
         ..Stats::default()
     };
-    let mut pairs: Vec<[u32; 2]> = Vec::new();
+    // About one edge a point: reserved, not grown by doubling at SIG-AUTO's peak.
+    let mut pairs: Vec<[u32; 2]> = Vec::with_capacity(dt.num_vertices());
     let mut inside: Vec<u32> = Vec::new();
     let mut chains = Chains::new(dt, join_ratio);
-    let mut scratch = Scratch(Reading::new(dt, &[]));
+    // Made for the first branching component: curves that chain alone never need it.
+    let mut scratch: Option<Scratch> = None;
     for (vertices, branched) in forests.components() {
         if !*branched {
             let path = tree.walk(vertices);
@@ -228,6 +240,7 @@ fn read_components(dt: &Triangulation, forests: &Forests, steps: &Steps) -> Read
         // it does not zigzag (an open curve whose samples come closer across a bend than
         // along it). Loops with an edge beyond the join bound give way to the SIGDT pieces.
         let mut paths = None;
+        let scratch = scratch.get_or_insert_with(|| Scratch(Reading::new(dt, &[])));
         if steps.zigzag_paths && scratch.zigzags(&closed.edges) {
             paths = tree.pieces_as_paths(dt, vertices).filter(|p| !scratch.zigzags(&path_pairs(p)));
         }

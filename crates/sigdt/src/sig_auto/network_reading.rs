@@ -3,9 +3,10 @@
 //! it there, when the sampling check finds them unbroken.
 use super::continuation::MAX_SAMPLED_TURN;
 use super::junctions;
-use super::reading::Reading;
+use super::reading::{self, Reading};
 use super::{curves_fail, finish, outlier_vertices, Facts, Kind};
 use crate::delaunay::Shape;
+use crate::geometry::Point;
 use crate::result::{Reconstruction, Stats, Status, Vertices};
 
 /// `rec` with the pair graph in place of its reading on the components whose branching
@@ -21,14 +22,23 @@ pub(super) fn network_reading(facts: &Facts, rec: &Reconstruction) -> Option<Rec
         return None;
     }
     let vertex_of = dt.vertex_of_inputs();
+    let cos_limit = MAX_SAMPLED_TURN.cos();
+    // Where the reading breaks nowhere, no network can replace it: the pair graph is not
+    // built (most curves). Loops through every point break only where they turn sharply,
+    // which their own vertices tell, without a reading of every vertex.
+    let n = dt.num_vertices();
+    let at = |i: usize| dt.point(vertex_of[i]);
+    let on_loops: usize = rec.loops.iter().map(Vec::len).sum();
+    if rec.paths.is_empty()
+        && on_loops == n
+        && !rec.loops.iter().any(|l| loop_turns_more_than(at, l, cos_limit))
+    {
+        return None;
+    }
     let read_pairs: Vec<[u32; 2]> =
         rec.edges.iter().map(|&[i, j]| [vertex_of[i], vertex_of[j]]).collect();
     let reading = Reading::new(dt, &read_pairs);
-    let cos_limit = MAX_SAMPLED_TURN.cos();
     let breaks = |v: u32| reading.degree(v) != 2 || reading.turns_more_than(v, cos_limit);
-    // Where the reading breaks nowhere, no network can replace it: the pair graph is not
-    // built (most curves).
-    let n = dt.num_vertices();
     if !(0..n as u32).any(breaks) {
         return None;
     }
@@ -67,4 +77,14 @@ pub(super) fn checked_network(
 ) -> Option<Reconstruction> {
     let rec = finish(facts, pairs, Vec::new(), outliers, stats, Kind::Network);
     (!curves_fail(&rec.diagnosis)).then_some(rec)
+}
+
+/// Whether the closed loop `ring` (input indices; `at` their points) turns anywhere by more
+/// than the angle whose cosine is `cos_limit`.
+fn loop_turns_more_than(at: impl Fn(usize) -> Point, ring: &[usize], cos_limit: f64) -> bool {
+    let k = ring.len();
+    (0..k).any(|j| {
+        let (p, q, r) = (at(ring[(j + k - 1) % k]), at(ring[j]), at(ring[(j + 1) % k]));
+        reading::turns_more_than(p, q, r, cos_limit)
+    })
 }

@@ -178,9 +178,14 @@ impl<'a> Reading<'a> {
         if x == NONE || y == NONE {
             return false;
         }
-        let (p, q, r) = (self.point(x), self.point(v), self.point(y));
-        let (u, w) = ([q[0] - p[0], q[1] - p[1]], [r[0] - q[0], r[1] - q[1]]);
-        let dot = u[0] * w[0] + u[1] * w[1];
-        dot < cos_limit * (u[0].hypot(u[1]) * w[0].hypot(w[1]))
+        turns_more_than(self.point(x), self.point(v), self.point(y), cos_limit)
     }
+}
+
+/// Whether a curve through `p`, `q` and `r` turns at `q` by more than the angle whose
+/// cosine is `cos_limit` (the same whichever way it runs).
+pub(crate) fn turns_more_than(p: Point, q: Point, r: Point, cos_limit: f64) -> bool {
+    let (u, w) = ([q[0] - p[0], q[1] - p[1]], [r[0] - q[0], r[1] - q[1]]);
+    let dot = u[0] * w[0] + u[1] * w[1];
+    dot < cos_limit * (u[0].hypot(u[1]) * w[0].hypot(w[1]))
 }

@@ -20,8 +20,9 @@ pub(crate) struct Forests {
     pub(crate) graph: EdgeMask,
     /// Edges leaf elimination added.
     pub leaf_edges_added: usize,
-    /// The minimum spanning forest of SIGDT: the sample spacing of every SIGDT piece.
-    pub sigdt: Tree,
+    /// The minimum spanning forest of SIGDT ([`Forests::sigdt`]), when it differs from
+    /// SIGDT2's (leaf elimination added edges); one tree serves both otherwise.
+    sigdt: Option<Tree>,
     /// The minimum spanning forest of SIGDT2.
     pub sigdt2: Tree,
     /// The connected components of SIGDT2 (see [`Forests::components`]).
@@ -42,17 +43,24 @@ impl Forests {
             dt.edge_halfedges().filter(|&h| graph.contains(h) && !sigdt.contains(h)),
         );
         let sigdt_tree = Tree::new(dt, &sigdt_forest);
-        // Without leaf edges, SIGDT2 is SIGDT and so are their forests.
-        let (sigdt2, mut sets) = match leaf_edges.is_empty() {
-            true => (sigdt_tree.clone(), sigdt_sets),
+        // Without leaf edges, SIGDT2 is SIGDT and so are their forests: one tree.
+        let (sigdt, sigdt2, mut sets) = match leaf_edges.is_empty() {
+            true => (None, sigdt_tree, sigdt_sets),
             false => {
                 let (edges, sets) =
                     kruskal_with_sets(dt, merge_sorted(dt, &sigdt_forest, &leaf_edges));
-                (Tree::new(dt, &edges), sets)
+                (Some(sigdt_tree), Tree::new(dt, &edges), sets)
             }
         };
+        // Freed before the components are listed: this is SIG-AUTO's peak.
+        drop((sigdt_forest, leaf_edges));
         let components = components(&mut sets, &sigdt2);
-        Forests { sigdt: sigdt_tree, sigdt2, graph, leaf_edges_added, components }
+        Forests { sigdt, sigdt2, graph, leaf_edges_added, components }
+    }
+
+    /// The minimum spanning forest of SIGDT: the sample spacing of every SIGDT piece.
+    pub(crate) fn sigdt(&self) -> &Tree {
+        self.sigdt.as_ref().unwrap_or(&self.sigdt2)
     }
 
     /// The connected components of SIGDT2 (vertices in increasing order, components by
@@ -67,33 +75,34 @@ impl Forests {
 /// lists them: counted first, so that each gets one allocation of its size.
 fn components(sets: &mut UnionFind, tree: &Tree) -> Vec<(Vec<u32>, bool)> {
     let n = tree.start.len() - 1;
-    let root: Vec<u32> = (0..n as u32).map(|v| sets.find(v)).collect();
+    // Each vertex's representative is asked for twice (the second time in one step, the
+    // paths compressed) rather than kept: this runs at SIG-AUTO's peak.
     // Slot of each representative, in increasing order of representatives.
     let mut slot = vec![u32::MAX; n];
     let mut sizes: Vec<usize> = Vec::new();
-    for v in 0..n {
-        if root[v] == v as u32 {
-            slot[v] = sizes.len() as u32;
+    for v in 0..n as u32 {
+        if sets.find(v) == v {
+            slot[v as usize] = sizes.len() as u32;
             sizes.push(0);
         }
     }
-    for &r in &root {
-        sizes[slot[r as usize] as usize] += 1;
+    for v in 0..n as u32 {
+        sizes[slot[sets.find(v) as usize] as usize] += 1;
     }
     let mut out: Vec<(Vec<u32>, bool)> =
         sizes.into_iter().map(|size| (Vec::with_capacity(size), false)).collect();
-    for (v, &r) in root.iter().enumerate() {
-        let entry = &mut out[slot[r as usize] as usize];
-        entry.0.push(v as u32);
-        entry.1 |= tree.degree(v as u32) > 2;
+    for v in 0..n as u32 {
+        let entry = &mut out[slot[sets.find(v) as usize] as usize];
+        entry.0.push(v);
+        entry.1 |= tree.degree(v) > 2;
     }
     out
 }
 
-/// A forest over the triangulation's vertices as compressed adjacency lists.
-#[derive(Clone)]
+/// A forest over the triangulation's vertices as compressed adjacency lists (8 bytes a
+/// vertex: `u32` offsets, as the triangulation numbers its vertices).
 pub(crate) struct Tree {
-    start: Vec<usize>,
+    start: Vec<u32>,
     entries: Vec<u32>,
 }
 
@@ -101,21 +110,22 @@ impl Tree {
     /// The forest with the half-edges `forest`.
     pub(crate) fn new(dt: &Triangulation, forest: &[u32]) -> Tree {
         let n = dt.num_vertices();
-        let edges: Vec<[u32; 2]> = forest.iter().map(|&h| [dt.origin(h), dt.dest(h)]).collect();
-        let mut start = vec![0; n + 1];
-        for &[a, b] in &edges {
-            start[a as usize + 1] += 1;
-            start[b as usize + 1] += 1;
+        // Read from the half-edges twice rather than copied: this runs at SIG-AUTO's peak.
+        let edges = || forest.iter().map(|&h| [dt.origin(h), dt.dest(h)]);
+        // `start[v]` counts up to the end of `v`'s run, then (filled backwards) its start.
+        let mut start = vec![0u32; n + 1];
+        for [a, b] in edges() {
+            start[a as usize] += 1;
+            start[b as usize] += 1;
         }
-        for v in 0..n {
-            start[v + 1] += start[v];
+        for v in 1..=n {
+            start[v] += start[v - 1];
         }
-        let mut fill = start.clone();
-        let mut entries = vec![0; 2 * edges.len()];
-        for &[a, b] in &edges {
-            for (x, y) in [(a, b), (b, a)] {
-                entries[fill[x as usize]] = y;
-                fill[x as usize] += 1;
+        let mut entries = vec![0; 2 * forest.len()];
+        for [a, b] in edges().rev() {
+            for (x, y) in [(b, a), (a, b)] {
+                start[x as usize] -= 1;
+                entries[start[x as usize] as usize] = y;
             }
         }
         Tree { start, entries }
@@ -123,7 +133,7 @@ impl Tree {
 
     /// The tree neighbours of `v`.
     pub(crate) fn neighbours(&self, v: u32) -> &[u32] {
-        &self.entries[self.start[v as usize]..self.start[v as usize + 1]]
+        &self.entries[self.start[v as usize] as usize..self.start[v as usize + 1] as usize]
     }
 
     /// The longest tree edge at any of `vertices`.
@@ -143,7 +153,8 @@ impl Tree {
     /// The vertices of a path-shaped component in order from one end.
     pub(crate) fn walk(&self, vertices: &[u32]) -> Vec<u32> {
         let start = vertices.iter().copied().find(|&v| self.degree(v) <= 1).unwrap_or(vertices[0]);
-        let mut path = vec![start];
+        let mut path = Vec::with_capacity(vertices.len());
+        path.push(start);
         let (mut previous, mut current) = (u32::MAX, start);
         while let Some(&step) = self.neighbours(current).iter().find(|&&w| w != previous) {
             if path.len() == vertices.len() {
