@@ -17,7 +17,7 @@ from ._input import (
     _is_geographic,
 )
 from ._result import Coordinates, Indices, Reconstruction
-from ._types import Method
+from ._types import Expect, Method
 from .errors import InvalidInputError, SigdtWarning
 
 
@@ -68,6 +68,7 @@ def reconstruct(
     *,
     method: Method = "sig-auto",
     leaf_elimination: bool = LEAF_ELIMINATION,
+    expect: Expect = "curves",
 ) -> Reconstruction:
     """Reconstruct the closed curve(s) through a set of 2D points.
 
@@ -92,6 +93,11 @@ def reconstruct(
     leaf_elimination : bool, default True
         Give every SIGDT leaf its shortest missing Delaunay edge before inflating
         (SIG-CONNECT2D only: ``False`` with another method is a ``ValueError``).
+    expect : {"curves", "areas"}, default "curves"
+        What the points outline, as far as you know. ``"areas"``: every curve is a closed
+        outline (polygon vertices, parcels, islands); SIG-AUTO then closes an open reading
+        where a polygon through the points fits as well, and any open path left is a
+        finding, ``"open-outlines"``, with a warning.
 
     Returns
     -------
@@ -137,7 +143,9 @@ def reconstruct(
     """
     _check_method(method, leaf_elimination)
     array, index, crs = _as_points_and_index(points)
-    fields = _core.reconstruct(array, method, bool(leaf_elimination), _is_geographic(crs))
+    fields = _core.reconstruct(
+        array, method, bool(leaf_elimination), _is_geographic(crs), expect=expect
+    )
     rec = Reconstruction(array, fields, index, crs)
     _warn_about([rec], many=False)
     return rec
@@ -149,6 +157,7 @@ def reconstruct_many(
     n_jobs: int | None = None,
     method: Method = "sig-auto",
     leaf_elimination: bool = LEAF_ELIMINATION,
+    expect: Expect = "curves",
 ) -> list[Reconstruction]:
     """Reconstruct many point sets in parallel (threads in Rust, the GIL released).
 
@@ -197,7 +206,7 @@ def reconstruct_many(
             arrays.append(_as_points(p))
         except InvalidInputError as e:
             raise InvalidInputError(f"point set {k}: {e}") from e
-    raws = _core.reconstruct_many(arrays, method, bool(leaf_elimination), n_jobs)
+    raws = _core.reconstruct_many(arrays, method, bool(leaf_elimination), n_jobs, expect=expect)
     results = [Reconstruction(a, raw) for a, raw in zip(arrays, raws)]
     _warn_about(results, many=True)
     return results

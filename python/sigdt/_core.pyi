@@ -72,7 +72,11 @@ class Trace(object):  # noqa: UP004  # the bases mirror the runtime's, as test_d
     def inside_at(self, step: int) -> npt.NDArray[np.bool_]: ...  # (T,)
 
 def reconstruct(
-    points: npt.NDArray[np.float64], method: str, leaf_elimination: bool, lon_lat: bool = False
+    points: npt.NDArray[np.float64],
+    method: str,
+    leaf_elimination: bool,
+    lon_lat: bool = False,
+    expect: str = "curves",
 ) -> _Reconstruction: ...
 def reconstruct_many(
     point_sets: Sequence[npt.NDArray[np.float64]],
@@ -81,6 +85,7 @@ def reconstruct_many(
     n_jobs: int | None = None,
     lon_lat: bool = False,
     _panic_in_set: int | None = None,  # test hook: that set panics in its worker
+    expect: str = "curves",
 ) -> list[_Reconstruction]: ...
 def trace(points: npt.NDArray[np.float64], method: str, leaf_elimination: bool) -> Trace | None: ...
 def polygons(

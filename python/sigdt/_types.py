@@ -9,6 +9,7 @@ from typing import Literal, TypedDict
 
 __all__ = [
     "Evaluation",
+    "Expect",
     "Finding",
     "GeoJsonFeature",
     "GraphOverlap",
@@ -100,7 +101,13 @@ FindingKind = Literal[
     "ends-meet",
     "outliers-on-curve",
     "noisy-area",
+    "open-outlines",
 ]
+
+#: What the points outline, as far as the caller knows (``expect=`` of
+#: :func:`sigdt.reconstruct`): ``"curves"`` (open or closed, as they read) or ``"areas"``
+#: (every curve is a closed outline).
+Expect = Literal["curves", "areas"]
 
 
 class Finding(TypedDict):
@@ -119,7 +126,9 @@ class Finding(TypedDict):
     nearer to one of its vertices than half that vertex's longer edge, or nearer to an
     edge than its length) or
     ``"noisy-area"`` (the loops' turns reverse at most points, as noise makes them, by
-    enough to make the area they enclose uncertain by more than 5 %); ``count`` edges,
+    enough to make the area they enclose uncertain by more than 5 %) or ``"open-outlines"``
+    (open paths where ``expect="areas"`` said the points outline areas; ``worst`` is the
+    largest gap between a path's ends over its longest edge); ``count`` edges,
     points, pairs of ends or loops show it; ``worst`` is the deepest reach in point
     spacings, the sharpest turn in degrees, the size of the smallest loop, the last edge
     over the nearest distance, the smallest gap between ends over their last edge, the

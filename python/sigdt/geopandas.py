@@ -19,7 +19,7 @@ from . import _core
 from ._api import _threads, _warn_about
 from ._input import LEAF_ELIMINATION, _as_points, _check_method, _is_geographic
 from ._result import Reconstruction
-from ._types import Method
+from ._types import Expect, Method
 from .errors import InvalidInputError
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -108,6 +108,7 @@ def reconstruct_frame(
     *,
     method: Method = "sig-auto",
     leaf_elimination: bool = LEAF_ELIMINATION,
+    expect: Expect = "curves",
     n_jobs: int | None = None,
     progress: bool | None = None,
 ) -> GeoDataFrame:
@@ -120,8 +121,8 @@ def reconstruct_frame(
     by : column name, list of column names, or None
         The column(s) whose values group the rows (one building, island or survey line
         each), as ``frame.groupby(by)``; ``None``: all rows are one group.
-    method, leaf_elimination
-        As in :func:`sigdt.reconstruct`.
+    method, leaf_elimination, expect
+        As in :func:`sigdt.reconstruct` (``expect="areas"`` for groups that outline areas).
     n_jobs : int, optional
         Threads, as in :func:`sigdt.reconstruct_many` (threads in Rust, the GIL released).
     progress : bool, optional
@@ -195,7 +196,9 @@ def reconstruct_frame(
     for start in range(0, len(arrays), batch):
         chunk = arrays[start : start + batch]
         try:
-            raws = _core.reconstruct_many(chunk, method, bool(leaf_elimination), threads, lon_lat)
+            raws = _core.reconstruct_many(
+                chunk, method, bool(leaf_elimination), threads, lon_lat, expect=expect
+            )
         except InvalidInputError as e:
             # "point set K: ..." counts within the batch: name the group instead.
             k, _, why = str(e).removeprefix("point set ").partition(": ")

@@ -4,6 +4,7 @@ points a method leaves out with their reasons."""
 from __future__ import annotations
 
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -143,3 +144,22 @@ def test_a_faithful_result_has_an_empty_diagnosis():
     rec = sigdt.reconstruct(circle())
     assert rec.diagnosis == [] and not rec.warns
     assert rec.to_geojson()["properties"]["warning"] is False
+
+
+def test_expect_areas_closes_outlines_or_warns():
+    # Togo and Georgia by their vertices (data/vertices): read as open lines by default.
+    # Told that the points outline areas, Togo closes; Georgia stays open and warns.
+    folder = Path(__file__).resolve().parents[2] / "data" / "vertices"
+    togo = np.loadtxt(folder / "ne_togo_raw.xy")
+    assert len(sigdt.reconstruct(togo).paths) == 1
+    rec = sigdt.reconstruct(togo, expect="areas")
+    assert rec.status == "polygon" and not rec.paths
+    georgia = np.loadtxt(folder / "ne_georgia_raw.xy")
+    with pytest.warns(sigdt.SigdtWarning, match="come back open although the points outline"):
+        rec = sigdt.reconstruct(georgia, expect="areas")
+    [finding] = [f for f in rec.diagnosis if f["kind"] == "open-outlines"]
+    assert finding["count"] == 1 and finding["point"] == list(georgia[finding["at"]])
+    [many] = sigdt.reconstruct_many([togo], expect="areas")
+    assert many == sigdt.reconstruct(togo, expect="areas")
+    with pytest.raises(ValueError, match="areas"):
+        sigdt.reconstruct(togo, expect="polygons")

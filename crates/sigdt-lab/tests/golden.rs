@@ -339,7 +339,7 @@ fn golden_ratchet_rules() {
 fn runs() -> Vec<(String, Options)> {
     let mut runs = vec![(
         "sig-connect2d-no-leaf-elimination".to_string(),
-        Options { method: Method::SigConnect2d, leaf_elimination: false },
+        Options { method: Method::SigConnect2d, leaf_elimination: false, ..Options::default() },
     )];
     for &method in Method::ALL {
         runs.push((method.to_string(), Options { method, ..Options::default() }));

@@ -256,6 +256,7 @@ fn finding_from(finding: &Bound<'_, PyAny>) -> PyResult<Finding> {
         FindingKind::OutliersOnCurve,
         FindingKind::EndsMeet,
         FindingKind::NoisyArea,
+        FindingKind::OpenOutlines,
     ]
     .into_iter()
     .find(|k| k.name() == name)

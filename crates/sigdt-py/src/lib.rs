@@ -20,11 +20,12 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use rayon::prelude::*;
-use sigdt::{GraphKind, Method, Options, Phase};
+use sigdt::{Expect, GraphKind, Method, Options, Phase};
 
-fn options(method: &str, leaf_elimination: bool) -> PyResult<Options> {
+fn options(method: &str, leaf_elimination: bool, expect: &str) -> PyResult<Options> {
     let method: Method = method.parse().map_err(err)?;
-    Ok(Options { method, leaf_elimination })
+    let expect: Expect = expect.parse().map_err(err)?;
+    Ok(Options { method, leaf_elimination, expect })
 }
 
 /// Why `lon_lat` input is reconstructed in a local plane, in its refusals.
@@ -55,15 +56,16 @@ fn run_err(e: anyhow::Error) -> PyErr {
 /// `reconstruct(points, method, leaf_elimination, lon_lat=False) -> dict` (see
 /// convert::reconstruction).
 #[pyfunction]
-#[pyo3(signature = (points, method, leaf_elimination, lon_lat=false))]
+#[pyo3(signature = (points, method, leaf_elimination, lon_lat=false, expect="curves"))]
 fn reconstruct<'py>(
     py: Python<'py>,
     points: PyReadonlyArray2<'py, f64>,
     method: &str,
     leaf_elimination: bool,
     lon_lat: bool,
+    expect: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let options = options(method, leaf_elimination)?;
+    let options = options(method, leaf_elimination, expect)?;
     let method = options.method;
     let pts = convert::points(&points)?;
     let n = pts.len();
@@ -101,7 +103,9 @@ fn pool(threads: usize) -> Result<Arc<rayon::ThreadPool>, String> {
 /// that index panics inside its worker instead of being reconstructed, so the tests can
 /// check that a Rust panic in one parallel task becomes an `InternalError` naming the set.
 #[pyfunction]
-#[pyo3(signature = (point_sets, method, leaf_elimination, n_jobs=None, lon_lat=false, _panic_in_set=None))]
+#[pyo3(signature = (point_sets, method, leaf_elimination, n_jobs=None, lon_lat=false, _panic_in_set=None, expect="curves"))]
+// The Python signature's arguments, one each: the binding stays thin.
+#[allow(clippy::too_many_arguments)]
 fn reconstruct_many<'py>(
     py: Python<'py>,
     point_sets: Vec<PyReadonlyArray2<'py, f64>>,
@@ -110,8 +114,9 @@ fn reconstruct_many<'py>(
     n_jobs: Option<usize>,
     lon_lat: bool,
     _panic_in_set: Option<usize>,
+    expect: &str,
 ) -> PyResult<Bound<'py, PyList>> {
-    let options = options(method, leaf_elimination)?;
+    let options = options(method, leaf_elimination, expect)?;
     let method = options.method;
     let sets = point_sets
         .iter()
@@ -175,7 +180,7 @@ fn trace(
     method: &str,
     leaf_elimination: bool,
 ) -> PyResult<Option<replay::Trace>> {
-    let options = options(method, leaf_elimination)?;
+    let options = options(method, leaf_elimination, "curves")?;
     let pts = convert::points(&points)?;
     let (_, trace) = py
         .detach(|| guarded(|| sigdt::reconstruct_traced(&pts, &options)))

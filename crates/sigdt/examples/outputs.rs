@@ -51,7 +51,7 @@ fn main() -> Result<(), Box<dyn Error>> {
             .collect();
         runs.push((
             "sig-connect2d/no-leaves".into(),
-            Options { method: Method::SigConnect2d, leaf_elimination: false },
+            Options { method: Method::SigConnect2d, leaf_elimination: false, ..Options::default() },
         ));
         for (label, options) in runs {
             let rec = sigdt::reconstruct(&points, &options)?;

@@ -47,7 +47,7 @@ pub use error::{Error, Result};
 pub use geometry::{Edge, Point};
 pub use method::{
     reconstruct, reconstruct_on, reconstruct_owned, reconstruct_traced, reconstruct_traced_on,
-    Method, Options,
+    Expect, Method, Options,
 };
 pub use proximity::{
     nearest_neighbour_distances, proximity_graph, proximity_graph_on, GraphKind, MAX_KNN_PAIRS,

@@ -13,7 +13,7 @@ use crate::delaunay::Triangulation;
 use crate::error::Result;
 use crate::geometry::Point;
 use crate::result::{degenerate_result, from_vertex_pairs, Reconstruction, Stats};
-use crate::sampling_check::diagnose;
+use crate::sampling_check::{diagnose, open_outlines};
 use crate::{sig_auto, sig_connect2d};
 
 /// A reconstruction method. Spelled in kebab case on the command line and in Python
@@ -129,6 +129,46 @@ impl FromStr for Method {
     }
 }
 
+/// What the caller knows the points outline ([`Options::expect`]).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+pub enum Expect {
+    /// Nothing more: curves come back open or closed as the points read (the default).
+    #[default]
+    Curves,
+    /// Areas: every curve is a closed outline (polygon vertices, parcels, islands). SIG-AUTO
+    /// then closes an open reading where a polygon through the points it keeps breaks the
+    /// sampling no more often, and every method's open path is a finding, `open-outlines`
+    /// (a warning), never a quiet line.
+    Areas,
+}
+
+impl Expect {
+    /// Every expectation, in the order of `--help`.
+    pub const ALL: &'static [Expect] = &[Expect::Curves, Expect::Areas];
+
+    /// The kebab-case name: `curves` or `areas`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Expect::Curves => "curves",
+            Expect::Areas => "areas",
+        }
+    }
+}
+
+impl fmt::Display for Expect {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Expect {
+    type Err = crate::error::Error;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        crate::error::find_by_name(Expect::ALL, Expect::name, s, "expectation")
+    }
+}
+
 /// Options of [`reconstruct`].
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Options {
@@ -139,11 +179,13 @@ pub struct Options {
     /// curves it is never worse, and better on manifold and sharp-corner cases
     /// (`docs/algorithms.md` §7.1 has the numbers).
     pub leaf_elimination: bool,
+    /// What the points outline, as far as the caller knows ([`Expect::Curves`] by default).
+    pub expect: Expect,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { method: Method::default(), leaf_elimination: true }
+        Options { method: Method::default(), leaf_elimination: true, expect: Expect::default() }
     }
 }
 
@@ -186,6 +228,9 @@ pub fn reconstruct_on(dt: &Triangulation, options: &Options) -> Reconstruction {
         // SIG-AUTO checks its own readings (it reads again when they warn).
         rec.diagnosis = diagnose(dt, &rec);
     }
+    if options.expect == Expect::Areas {
+        rec.diagnosis.extend(open_outlines(dt, &rec));
+    }
     rec
 }
 
@@ -195,7 +240,7 @@ fn run_method(dt: &Triangulation, options: &Options) -> Reconstruction {
         Method::SigConnect2d => {
             return sig_connect2d::sig_connect2d_on(dt, options.leaf_elimination)
         }
-        Method::SigAuto => return sig_auto::sig_auto_on(dt),
+        Method::SigAuto => return sig_auto::sig_auto_expecting(dt, options.expect),
         Method::Connect2d => return baselines::connect2d::connect2d_on(dt),
         Method::OptimalTransport => return baselines::optimal_transport::optimal_transport_on(dt),
         Method::FitConnect => return baselines::fit_connect::fit_connect_on(dt),

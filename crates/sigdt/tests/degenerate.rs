@@ -429,7 +429,7 @@ fn a_long_line_with_one_point_off_without_leaf_elimination() {
     let n = size(100_000, 5_000);
     let points = line_and_point(n);
     for method in [Method::SigConnect2d, Method::Connect2d] {
-        let options = Options { method, leaf_elimination: false };
+        let options = Options { method, leaf_elimination: false, ..Options::default() };
         let start = Instant::now();
         let rec = reconstruct(&points, &options).unwrap();
         let ms = start.elapsed().as_secs_f64() * 1e3;

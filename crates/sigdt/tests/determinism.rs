@@ -80,7 +80,7 @@ fn owned_points_and_a_shared_triangulation_give_the_same_result() {
     // `reconstruct_owned` frees the points too, `reconstruct_on` does neither.
     for (name, points, method) in jobs() {
         for leaf_elimination in [true, false] {
-            let options = Options { method, leaf_elimination };
+            let options = Options { method, leaf_elimination, ..Options::default() };
             let borrowed = format!("{:?}", reconstruct(&points, &options).unwrap());
             let owned = format!("{:?}", reconstruct_owned(points.clone(), &options).unwrap());
             let dt = Triangulation::new(&points).unwrap();

@@ -7,7 +7,7 @@ use sigdt::{reconstruct, Method, Options, Point};
 fn reconstruct_all(points: &[Point]) {
     for &method in Method::ALL {
         for leaf_elimination in [true, false] {
-            let options = Options { method, leaf_elimination };
+            let options = Options { method, leaf_elimination, ..Options::default() };
             let rec = reconstruct(points, &options).unwrap();
             if let Err(why) = check_reconstruction(points, &rec) {
                 panic!("{method} (leaf elimination {leaf_elimination}): {why}\n{rec:?}");

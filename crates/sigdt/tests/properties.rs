@@ -66,7 +66,7 @@ proptest! {
         let sigdt = proximity_graph(&s.points, GraphKind::SigDt).unwrap();
         prop_assert!(subset(&s.edges, &sigdt), "Theorem 1: a ground-truth edge is missing from SIGDT");
         for leaf_elimination in [true, false] {
-            let options = Options { method: Method::SigConnect2d, leaf_elimination };
+            let options = Options { method: Method::SigConnect2d, leaf_elimination, ..Options::default() };
             let rec = reconstruct(&s.points, &options).unwrap();
             prop_assert!(check_reconstruction(&s.points, &rec).is_ok());
             prop_assert_eq!(&rec.edges, &s.edges, "not exact (leaf elimination {})", leaf_elimination);

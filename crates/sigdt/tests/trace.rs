@@ -54,8 +54,8 @@ fn inputs() -> Vec<(String, Vec<Point>)> {
 fn options() -> Vec<Options> {
     vec![
         sig_connect2d(),
-        Options { method: Method::SigConnect2d, leaf_elimination: false },
-        Options { method: Method::Connect2d, leaf_elimination: true },
+        Options { method: Method::SigConnect2d, leaf_elimination: false, ..Options::default() },
+        Options { method: Method::Connect2d, ..Options::default() },
     ]
 }
 
@@ -169,7 +169,7 @@ fn some_inputs_exercise_every_phase() {
 fn graph_filters_and_degenerate_input_have_no_trace() {
     let points = circle(12, [0.0, 0.0], 1.0);
     for &method in Method::ALL {
-        let options = Options { method, leaf_elimination: true };
+        let options = Options { method, ..Options::default() };
         let (rec, trace) = reconstruct_traced(&points, &options).unwrap();
         assert_eq!(rec, reconstruct(&points, &options).unwrap());
         let inflates = matches!(method, Method::SigConnect2d | Method::Connect2d);

@@ -7,7 +7,7 @@ use anyhow::{bail, Result};
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::Args;
 use sigdt::io::OutputFormat as TextFormat;
-use sigdt::{Method, Options, Reconstruction, Vertices};
+use sigdt::{Expect, Method, Options, Reconstruction, Vertices};
 
 use crate::format::{Context, OutputFormat};
 use crate::gis::local::{reconstruct_in_plane, why_degrees};
@@ -35,6 +35,13 @@ pub struct ReconstructArgs {
     /// (leaf elimination, SIGDT2, is on by default; with --method sig-connect2d only).
     #[arg(long)]
     pub no_leaf_elimination: bool,
+    /// What the points outline, as far as you know: 'curves' (open or closed, as they read)
+    /// or 'areas' (every curve is a closed outline: polygon vertices, parcels, islands).
+    /// With 'areas', SIG-AUTO closes open readings where a polygon fits as well, and any
+    /// open line left is a warning (open-outlines).
+    #[arg(long, value_name = "WHAT", default_value_t = Expect::default(),
+          value_parser = |s: &str| s.parse::<Expect>().map_err(|e| e.to_string()))]
+    pub expect: Expect,
     /// GeoJSON output of points in a projected coordinate system: write them with the
     /// legacy 'crs' member of GeoJSON 2008 (which RFC 7946 removed; QGIS and GDAL still read
     /// it) instead of refusing.
@@ -105,7 +112,11 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
             );
         }
     }
-    let options = Options { method: args.method, leaf_elimination: !args.no_leaf_elimination };
+    let options = Options {
+        method: args.method,
+        leaf_elimination: !args.no_leaf_elimination,
+        expect: args.expect,
+    };
     let degrees = why_degrees(crs.as_ref(), read.lon_lat);
     let start = Instant::now();
     // Edges and loops are indices: the points can go once triangulated (less peak memory).

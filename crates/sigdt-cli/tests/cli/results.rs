@@ -334,3 +334,38 @@ fn left_out_points_are_reported_without_verbose() {
     let json = sigdt_in(dir.path(), &args, None);
     assert!(json.stdout.contains(r#""left_out": [60], "left_out_reasons": ["outlier"]"#), "{json}");
 }
+
+#[test]
+fn expect_areas_closes_outlines_or_warns() {
+    // Togo and Georgia by their vertices (data/vertices): SIG-AUTO reads both as open lines.
+    // Told that they outline areas, Togo closes into its polygon; Georgia stays open, and
+    // says so.
+    let dir = tempdir();
+    let vertices = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/vertices");
+    for name in ["ne_togo_raw.xy", "ne_georgia_raw.xy"] {
+        fs::copy(vertices.join(name), dir.path().join(name)).unwrap();
+    }
+    let lines = |args: &[&str]| {
+        let run = sigdt_in(dir.path(), args, None);
+        let stdout = run.expect(0).stdout.clone();
+        // `--format loops` writes a loop as its indices, an open path after the word "path".
+        let kind = |l: &str| if l.starts_with("path") { "path" } else { "loop" };
+        let kinds: Vec<&str> = stdout.lines().map(kind).collect();
+        (kinds, run.stderr.clone())
+    };
+    let (kinds, _) = lines(&["reconstruct", "ne_togo_raw.xy", "--format", "loops"]);
+    assert_eq!(kinds, ["path"]);
+    let (kinds, _) =
+        lines(&["reconstruct", "ne_togo_raw.xy", "--format", "loops", "--expect", "areas"]);
+    assert_eq!(kinds, ["loop"]);
+    let (kinds, stderr) =
+        lines(&["reconstruct", "ne_georgia_raw.xy", "--format", "loops", "--expect", "areas"]);
+    assert_eq!(kinds, ["path"]);
+    assert!(stderr.contains("come back open although the points outline areas"), "{stderr}");
+    let (_, stderr) = lines(&["reconstruct", "ne_georgia_raw.xy", "--format", "loops"]);
+    assert!(!stderr.contains("outline areas"), "{stderr}");
+    let run =
+        sigdt_in(dir.path(), &["reconstruct", "ne_togo_raw.xy", "--expect", "polygons"], None);
+    run.usage_error();
+    assert!(run.stderr.contains("curves") && run.stderr.contains("areas"), "{run}");
+}

@@ -157,11 +157,14 @@ pub enum FindingKind {
     /// to make the area they enclose uncertain by more than a twentieth
     /// (`sampling_check/noisy_area.rs`).
     NoisyArea,
+    /// Open paths where the caller said the points outline areas
+    /// ([`Expect::Areas`](crate::Expect::Areas)): no reading closed them.
+    OpenOutlines,
 }
 
 impl FindingKind {
     /// The kebab-case name: `passes-over-samples`, `doubles-back`, `small-loops`,
-    /// `open-ends`, `ends-meet`, `outliers-on-curve` or `noisy-area`.
+    /// `open-ends`, `ends-meet`, `outliers-on-curve`, `noisy-area` or `open-outlines`.
     pub fn name(self) -> &'static str {
         match self {
             FindingKind::PassesOverSamples => "passes-over-samples",
@@ -171,6 +174,7 @@ impl FindingKind {
             FindingKind::OutliersOnCurve => "outliers-on-curve",
             FindingKind::EndsMeet => "ends-meet",
             FindingKind::NoisyArea => "noisy-area",
+            FindingKind::OpenOutlines => "open-outlines",
         }
     }
 }
@@ -228,6 +232,13 @@ impl std::fmt::Display for Finding {
                  points are noisy samples, the area they enclose is uncertain by about {:.0} %; \
                  if they are exact vertices, only the order they are joined in is in doubt",
                 100.0 * worst
+            ),
+            FindingKind::OpenOutlines => write!(
+                f,
+                "{count} outline(s) come back open although the points outline areas (worst \
+                 near {near}, where its ends lie {worst:.1} times its longest edge apart): \
+                 the points do not close it there; densify the source lines there, or look \
+                 for a missing stretch"
             ),
         }
     }
@@ -566,6 +577,40 @@ pub(crate) fn diagnose_with(
         curves.iter().filter(|(_, closed)| *closed).map(|(c, _)| c.as_slice()).collect();
     found.extend(noisy_area(dt, &rings));
     found
+}
+
+/// The finding `open-outlines` of `rec` (a result on `dt`'s points), when the caller said
+/// the points outline areas: its open paths, the worst the one whose ends lie farthest
+/// apart against its longest edge, at its end of smaller input index. `None` without open
+/// paths, or for results on vertices of their own.
+pub(crate) fn open_outlines(
+    dt: &Triangulation,
+    rec: &crate::result::Reconstruction,
+) -> Option<Finding> {
+    if rec.paths.is_empty() || rec.vertices != crate::result::Vertices::Input {
+        return None;
+    }
+    let vertex_of = dt.vertex_of_inputs();
+    let at = |i: usize| dt.point(vertex_of[i]);
+    let gap = |path: &Vec<usize>| {
+        let longest = path.windows(2).map(|w| distance(at(w[0]), at(w[1]))).fold(0.0, f64::max);
+        let ends = distance(at(path[0]), at(path[path.len() - 1]));
+        if longest > 0.0 {
+            ends / longest
+        } else {
+            0.0
+        }
+    };
+    let mut worst: Option<(f64, usize)> = None;
+    for path in rec.paths.iter().filter(|p| p.len() >= 2) {
+        let (g, end) = (gap(path), path[0].min(path[path.len() - 1]));
+        if worst.map_or(true, |(w, e)| g > w || (g == w && end < e)) {
+            worst = Some((g, end));
+        }
+    }
+    let (worst, at) = worst?;
+    let point = given_point(dt, vertex_of[at]);
+    Some(Finding { kind: FindingKind::OpenOutlines, count: rec.paths.len(), worst, at, point })
 }
 
 /// The `outliers` (vertices of `dt`) that lie within the sampling of `curves` (property 5):

@@ -80,7 +80,9 @@ fn breaks(rec: &Reconstruction) -> usize {
 /// (module docs).
 pub(crate) fn best_reading(facts: &Facts, rec: Reconstruction) -> Reconstruction {
     let dt = facts.dt;
+    // Told that the points outline areas, open paths are never settled.
     let settled = breaks(&rec) == 0 && rec.paths.is_empty();
+    let closing = facts.areas && !rec.paths.is_empty();
     if settled
         || dt.shape() != Shape::Proper
         || rec.vertices != Vertices::Input
@@ -96,7 +98,12 @@ pub(crate) fn best_reading(facts: &Facts, rec: Reconstruction) -> Reconstruction
     let own_uniformity = worst_uniformity(at, &rec.loops, &rec.paths, None);
     let own_edges: HashSet<[usize; 2]> =
         rec.edges.iter().map(|&[a, b]| [a.min(b), a.max(b)]).collect();
-    let (min_loops, max_loops) = (rec.loops.len(), rec.loops.len().max(1));
+    // Each open path may close into an area of its own when the caller expects areas.
+    let max_loops = match closing {
+        true => rec.loops.len() + rec.paths.len(),
+        false => rec.loops.len().max(1),
+    };
+    let min_loops = rec.loops.len();
     let mut best = rec;
     for candidate in polygons_through_kept(facts, &best, &vertex_of) {
         if !candidate.paths.is_empty()
@@ -105,12 +112,16 @@ pub(crate) fn best_reading(facts: &Facts, rec: Reconstruction) -> Reconstruction
         {
             continue;
         }
+        // The gate keeps evenly sampled open curves open; areas are closed by the caller's word.
         let new_uniformity = worst_uniformity(at, &candidate.loops, &[], Some(&own_edges));
-        if new_uniformity > own_uniformity.max(LONG_EDGE_RATIO) {
+        if !closing && new_uniformity > own_uniformity.max(LONG_EDGE_RATIO) {
             continue;
         }
         let misfit = Misfit::of(at, &candidate);
-        if misfit.better_than(&best_misfit) {
+        // Expecting areas, a polygon that closes the open paths wins unless it breaks the
+        // sampling more often (its length no longer decides against it).
+        let closes = closing && !best.paths.is_empty() && misfit.breaks <= best_misfit.breaks;
+        if closes || misfit.better_than(&best_misfit) {
             (best, best_misfit) = (candidate, misfit);
         }
     }
@@ -215,6 +226,37 @@ mod tests {
         check_reconstruction(&points, &rec).unwrap();
         assert_eq!(rec.status, Status::Polygon);
         assert_eq!(rec.edges, truth);
+    }
+
+    #[test]
+    fn told_that_the_points_outline_areas_an_open_reading_closes() {
+        // Togo by its vertices (Natural Earth 1:110m): read as one open path, the polygon's
+        // new side is eight times the sides beside it, so the gate keeps it open. Told that
+        // the points outline an area, the polygon through them fits as well and closes it:
+        // the true outline.
+        use crate::{reconstruct, Expect, FindingKind, Options};
+        let points = read(include_str!("../../../../data/vertices/ne_togo_raw.xy"));
+        let truth = edges(include_str!("../../../../data/vertices/ne_togo_raw.gt"));
+        let curves = reconstruct(&points, &Options::default()).unwrap();
+        assert_eq!((curves.loops.len(), curves.paths.len()), (0, 1));
+        let areas = Options { expect: Expect::Areas, ..Options::default() };
+        let rec = reconstruct(&points, &areas).unwrap();
+        check_reconstruction(&points, &rec).unwrap();
+        assert_eq!((rec.status, &rec.edges), (Status::Polygon, &truth));
+        // Georgia's vertices stay open even so: the polygons through the points it keeps
+        // break the sampling where its open reading does not. The open line is then a
+        // finding, `open-outlines`, at its end of smaller index, and a warning; without the
+        // word, no such finding.
+        let points = read(include_str!("../../../../data/vertices/ne_georgia_raw.xy"));
+        let rec = reconstruct(&points, &areas).unwrap();
+        assert_eq!(rec.paths.len(), 1);
+        let open = rec.diagnosis.iter().find(|f| f.kind == FindingKind::OpenOutlines);
+        let open = open.expect("an open outline where areas were expected is a finding");
+        assert_eq!((open.count, open.at), (1, 15));
+        assert_eq!(open.point, points[15]);
+        assert!(rec.warns() && open.to_string().contains("densify"), "{open}");
+        let quiet = reconstruct(&points, &Options::default()).unwrap();
+        assert!(!quiet.diagnosis.iter().any(|f| f.kind == FindingKind::OpenOutlines));
     }
 
     #[test]

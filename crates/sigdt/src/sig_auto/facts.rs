@@ -14,6 +14,8 @@ pub(super) struct Facts<'a> {
     pub spacing: Option<&'a [f64]>,
     /// The junction networks, when `steps.junctions` and `dt` is proper.
     pub networks: Option<Networks<'a>>,
+    /// The caller said the points outline areas ([`Expect::Areas`](crate::Expect::Areas)).
+    pub areas: bool,
 }
 
 impl<'a> Facts<'a> {
@@ -21,7 +23,7 @@ impl<'a> Facts<'a> {
     /// vertices (`None` when `dt` is not proper).
     pub fn new(dt: &'a Triangulation, steps: &'a Steps, spacing: Option<&'a [f64]>) -> Self {
         let networks = spacing.filter(|_| steps.junctions).map(|s| Networks::new(dt, s));
-        Facts { dt, steps, spacing, networks }
+        Facts { dt, steps, spacing, networks, areas: false }
     }
 
     /// Where the sampling check reads `r(v)`: the known distances, when there are any.

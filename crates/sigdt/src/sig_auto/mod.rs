@@ -100,6 +100,7 @@ mod wired_outliers;
 use crate::delaunay::{Shape, Triangulation};
 use crate::proximity::nearest::nearest_vertex_distances;
 use crate::result::{Reconstruction, Status};
+use crate::Expect;
 use checked_reading::{checked_reading, curves_fail, fails, with_skipped_samples};
 use facts::Facts;
 use finish::{finish, outlier_vertices, Kind};
@@ -115,9 +116,17 @@ pub use steps::Steps;
 /// labelled data no case needs more than two (`docs/sig-auto.md`).
 pub const MAX_ROUNDS: usize = 16;
 
-/// Reconstructs `dt`'s points with SIG-AUTO (see the module docs).
+/// Reconstructs `dt`'s points with SIG-AUTO (see the module docs), expecting nothing.
+#[cfg(test)]
 pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
     sig_auto_with(dt, &Steps::default())
+}
+
+/// SIG-AUTO on `dt`'s points, told what they outline: with [`Expect::Areas`], step 16 reads
+/// the polygons through the points it keeps wherever the result has open paths, and takes
+/// one that closes them unless it breaks the sampling more often.
+pub(crate) fn sig_auto_expecting(dt: &Triangulation, expect: Expect) -> Reconstruction {
+    read_all(dt, &Steps::default(), expect == Expect::Areas)
 }
 
 /// SIG-AUTO with some of its steps switched off or another gap ratio ([`Steps`]). Not a
@@ -131,9 +140,14 @@ pub(crate) fn sig_auto_on(dt: &Triangulation) -> Reconstruction {
 /// first when it passes the check.
 #[doc(hidden)]
 pub fn sig_auto_with(dt: &Triangulation, steps: &Steps) -> Reconstruction {
+    read_all(dt, steps, false)
+}
+
+/// The pipeline: the stages of the module docs in turn (`areas`: [`Expect::Areas`]).
+fn read_all(dt: &Triangulation, steps: &Steps, areas: bool) -> Reconstruction {
     // Every vertex's nearest-neighbour distance, shared by every stage.
     let spacing = (dt.shape() == Shape::Proper).then(|| nearest_vertex_distances(dt));
-    let facts = Facts::new(dt, steps, spacing.as_deref());
+    let facts = Facts { areas, ..Facts::new(dt, steps, spacing.as_deref()) };
     let rec = checked_reading(&facts);
     if rec.status == Status::Network {
         return rec;
