@@ -171,7 +171,7 @@ def reconstruct_many(
         Number of threads; default (``None``) or ``-1``: one per core; ``-2`` all cores but
         one, and so on (scikit-learn's convention). At most the number of cores: more
         threads would only add overhead.
-    method, leaf_elimination
+    method, leaf_elimination, expect
         As in :func:`reconstruct`.
 
     Returns
