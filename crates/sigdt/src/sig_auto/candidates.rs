@@ -25,6 +25,11 @@
 //! read as polygon sides only where the points show such runs elsewhere, so that the open
 //! curves of evenly spaced samples stay open.
 //!
+//! **When the caller says the points outline areas** (`Expect::Areas`): a reading with open
+//! paths is replaced by a polygon that breaks the sampling no more often, whatever its
+//! length and the uniformity of its new sides, and with up to one loop per open path more
+//! than the reading has; an open path that stays is reported (`open-outlines`).
+//!
 //! # Complexity
 //! O(1) when the reading passes the check with no open path; otherwise two more readings
 //! (O(n log n) each) and their checks.
@@ -80,8 +85,8 @@ fn breaks(rec: &Reconstruction) -> usize {
 /// (module docs).
 pub(crate) fn best_reading(facts: &Facts, rec: Reconstruction) -> Reconstruction {
     let dt = facts.dt;
-    // Told that the points outline areas, open paths are never settled.
     let settled = breaks(&rec) == 0 && rec.paths.is_empty();
+    // Told that the points outline areas, a reading with open paths is closed if it can be.
     let closing = facts.areas && !rec.paths.is_empty();
     if settled
         || dt.shape() != Shape::Proper
