@@ -294,18 +294,11 @@ pictures: build py-build
 	  $(SIGDT) render $(REAL)/$$c.xy --gt $(REAL)/$$c.gt --method sig-connect2d --width 420 \
 	    -o docs/images/sig-auto/real/$$c.sig-connect2d.svg; \
 	done
-	mkdir -p docs/images/sig-auto/vertices
-	for c in $(VERTEX_PICTURES); do \
+	mkdir -p docs/images/sig-auto/vertices docs/images/sig-auto/outlines
+	for c in $(VERTEX_PICTURES:%=vertices/%) $(OUTLINE_PICTURES:%=outlines/%); do \
 	  for m in sig-connect2d sig-auto; do \
-	    $(SIGDT) render data/vertices/$$c.xy --gt data/vertices/$$c.gt --method $$m --width 420 \
-	      -o docs/images/sig-auto/vertices/$$c.$$m.svg; \
-	  done; \
-	done
-	mkdir -p docs/images/sig-auto/outlines
-	for c in $(OUTLINE_PICTURES); do \
-	  for m in sig-connect2d sig-auto; do \
-	    $(SIGDT) render data/outlines/$$c.xy --gt data/outlines/$$c.gt --method $$m --width 420 \
-	      -o docs/images/sig-auto/outlines/$$c.$$m.svg; \
+	    $(SIGDT) render data/$$c.xy --gt data/$$c.gt --method $$m --width 420 \
+	      -o docs/images/sig-auto/$$c.$$m.svg; \
 	  done; \
 	done
 

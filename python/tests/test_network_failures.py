@@ -5,25 +5,8 @@ counts as a sampling condition."""
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-from pathlib import Path
-
 import numpy as np
-
-BENCH = Path(__file__).resolve().parents[2] / "python" / "bench"
-
-
-def load(name: str):
-    sys.path.insert(0, str(BENCH))  # the script imports its sibling network_scores
-    try:
-        spec = importlib.util.spec_from_file_location(name, BENCH / f"{name}.py")
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-        return module
-    finally:
-        sys.path.remove(str(BENCH))
-
+from bench_scripts import load
 
 failures = load("network_failures")
 

@@ -5,23 +5,12 @@ from __future__ import annotations
 
 import csv
 import filecmp
-import importlib.util
-import sys
 from pathlib import Path
+
+from bench_scripts import load
 
 ROOT = Path(__file__).resolve().parents[2]
 FOLDER = ROOT / "data" / "vertices"
-
-
-def load(name: str):
-    bench = str(ROOT / "python" / "bench")
-    if bench not in sys.path:
-        sys.path.insert(0, bench)
-    spec = importlib.util.spec_from_file_location(name, ROOT / "python" / "bench" / f"{name}.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[name] = module
-    spec.loader.exec_module(module)
-    return module
 
 
 def test_the_folder_is_what_the_generator_writes(tmp_path):
