@@ -114,15 +114,16 @@ py-test: py-build py-lint build browser
 
 lint:
 	$(CARGO) fmt --all --check
-	$(CARGO) clippy --locked --workspace --all-targets -- -D warnings
+	$(CARGO) clippy --locked --workspace --all-targets --features sigdt/geo-types -- -D warnings
 
+# With the optional `geo-types` conversion of the kernel, so that its tests and doctest run.
 rust-test:
-	$(CARGO) test --locked --workspace
+	$(CARGO) test --locked --workspace --features sigdt/geo-types
 
 # Private items too: their links are what the next developer follows.
 doc:
-	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps --workspace
-	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps --workspace --document-private-items
+	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps --workspace --features sigdt/geo-types
+	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps --workspace --features sigdt/geo-types --document-private-items
 
 ## bench: the speed tables (make bench SIZES=1e5,1e6,1e7 for the large sizes): Delaunay,
 ## total, CGAL (when libcgal-dev is installed), memory per point, one thread against two;

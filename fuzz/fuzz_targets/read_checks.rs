@@ -1,5 +1,5 @@
 //! What the reader targets (`read_wkt`, `read_geojson`, `read_npy`, `read_table`) check of
-//! `sigdt_cli::read_points_bytes`, included by each with `#[path]` (not a target itself).
+//! `sigdt_io::read_points_bytes`, included by each with `#[path]` (not a target itself).
 //!
 //! - No panic (implicit).
 //! - `Ok`: at most `max_points` points, every coordinate finite.
@@ -15,7 +15,7 @@
 
 use std::sync::OnceLock;
 
-use sigdt_cli::ReadError;
+use sigdt_io::Error as ReadError;
 
 /// The most points a target asks for: small enough that libFuzzer's inputs (4096 bytes by
 /// default) can hold more, so that "more than N points" is reached too.
@@ -64,7 +64,7 @@ fn known_allowed() -> bool {
 /// Reads `bytes` named `name` with `columns` and checks the answer; `known` marks the
 /// messages of known findings. See the module docs.
 pub fn check(bytes: &[u8], name: &str, columns: Option<&str>, known: &[&str]) {
-    match sigdt_cli::read_points_bytes(bytes, name, columns, MAX_POINTS) {
+    match sigdt_io::read_points_bytes(bytes, name, columns, MAX_POINTS) {
         Ok(points) => {
             assert!(points.len() <= MAX_POINTS, "{} points, over the limit", points.len());
             assert!(

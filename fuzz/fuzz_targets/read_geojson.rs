@@ -1,5 +1,5 @@
 //! Arbitrary bytes as a `.geojson` file through the command line's reader
-//! (`sigdt_cli::read_points_bytes`, name `in.geojson`, at most 100 points): no panic; `Ok`
+//! (`sigdt_io::read_points_bytes`, name `in.geojson`, at most 100 points): no panic; `Ok`
 //! gives at most 100 finite points; an error is one line that names the file, holds no
 //! control character and is at most 1000 characters (see `read_checks.rs` for the bound).
 //! Bytes that start with the gzip magic are decompressed first.

@@ -1,5 +1,5 @@
 //! The `.npy` magic bytes (`\x93NUMPY`) and then arbitrary bytes (version, header length,
-//! header dict, data) through the command line's reader (`sigdt_cli::read_points_bytes`,
+//! header dict, data) through the readers (`sigdt_io::read_points_bytes`,
 //! name `in.npy`, at most 100 points): no panic; `Ok` gives at most 100 finite points; an
 //! error is one line that names the file, holds no control character and is at most 1000
 //! characters (see `read_checks.rs` for the bound). Bytes that already start with the magic,

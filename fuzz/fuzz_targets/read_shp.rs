@@ -1,5 +1,5 @@
 //! The Shapefile file code (big-endian 9994) and then arbitrary bytes through the command line's reader
-//! (`sigdt_cli::read_points_bytes`, name `in.shp`, at most 100 points): no panic, no
+//! (`sigdt_io::read_points_bytes`, name `in.shp`, at most 100 points): no panic, no
 //! allocation a size field asks for before its bytes arrive; `Ok` gives at most 100 finite
 //! points; an error is one line that names the file, holds no control character and is at
 //! most 1000 characters (see `read_checks.rs`). Bytes that already start with the magic,

@@ -1,5 +1,5 @@
 //! The first byte chooses `--columns` (none, `1,2`, `2,3` or `x,y`), the rest is a `.csv`
-//! file, through the command line's reader (`sigdt_cli::read_points_bytes`, name `in.csv`,
+//! file, through the readers (`sigdt_io::read_points_bytes`, name `in.csv`,
 //! at most 100 points): with columns the table reader reads it, without them the reader the
 //! content calls for (a table with more than two fields, `;` or quotes; else plain lines,
 //! GeoJSON or WKT). No panic; `Ok` gives at most 100 finite points; an error is one line

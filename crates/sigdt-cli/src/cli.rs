@@ -115,7 +115,7 @@ pub struct Cli {
     /// Read the points from these columns of a CSV table: names from its header row or
     /// numbers from 1, for example `--columns lon,lat` or `--columns 3,4`.
     #[arg(long, global = true, value_name = "X,Y")]
-    pub columns: Option<crate::read::Columns>,
+    pub columns: Option<sigdt_io::Columns>,
     /// The GeoPackage layer to read the points from (by default the only layer, or the only
     /// point layer).
     #[arg(long, global = true, value_name = "NAME")]
@@ -124,7 +124,7 @@ pub struct Cli {
     /// `EPSG:4326`), written to GeoPackage and FlatGeobuf output; a file that declares
     /// another is refused (sigdt does not transform coordinates).
     #[arg(long, global = true, value_name = "EPSG:N", value_parser = parse_crs)]
-    pub crs: Option<crate::gis::Crs>,
+    pub crs: Option<sigdt_io::Crs>,
     /// Threads for the data-parallel passes (sorting, nearest neighbours, the SIGDT test);
     /// by default every core, or RAYON_NUM_THREADS when it is set; more than the cores count
     /// as the cores. The output is the same, byte for byte, at every thread count.
@@ -134,8 +134,8 @@ pub struct Cli {
 }
 
 /// `--crs` values.
-fn parse_crs(text: &str) -> Result<crate::gis::Crs, String> {
-    crate::gis::Crs::parse(text)
+fn parse_crs(text: &str) -> Result<sigdt_io::Crs, String> {
+    sigdt_io::Crs::parse(text)
 }
 
 /// Default of `--max-points`: 10^8 points (1.6 GB of coordinates).

@@ -9,7 +9,7 @@ use std::str::FromStr;
 use sigdt::io::{OutputFormat as Text, WriteOptions};
 use sigdt::{Method, Point, Reconstruction};
 
-use crate::gis::{fgb, gpkg, layers::Layers as GisLayers, Crs};
+use sigdt_io::gis::{fgb, gpkg, layers::Layers as GisLayers, Crs};
 use sigdt_lab::render::{render_svg, Layers, RenderOptions};
 
 /// An output format. Spelled `edges`, `loops`, `wkt`, `geojson`, `svg`, `png`, `gpkg` and

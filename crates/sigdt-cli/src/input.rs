@@ -8,10 +8,10 @@ use std::path::Path;
 use anyhow::Result;
 use sigdt::{Edge, Point};
 
-use crate::gis::local::why_degrees;
-use crate::gis::Crs;
+use sigdt_io::gis::local::why_degrees;
+use sigdt_io::{Columns, Crs, Points, ReadOptions};
+
 use crate::output::is_dash;
-use crate::read::{self, Columns, Reading};
 
 /// The settings every command's input reading shares, from the global flags.
 #[derive(Debug, Clone)]
@@ -38,7 +38,7 @@ impl Input {
     }
 
     /// The points of `input`, a file or `-` for standard input, in any format of
-    /// [`crate::read`].
+    /// [`sigdt_io::read`].
     pub fn points(&self, input: &Path) -> Result<Vec<Point>> {
         Ok(self.points_and_how(input)?.points)
     }
@@ -59,38 +59,17 @@ impl Input {
     }
 
     /// [`Input::points`], and how they were read (the format; a table's columns).
-    pub fn points_and_how(&self, input: &Path) -> Result<read::Points> {
-        let how = Reading {
+    pub fn points_and_how(&self, input: &Path) -> Result<Points> {
+        let options = ReadOptions {
             max_points: self.max_points,
-            columns: self.columns.as_ref(),
-            layer: self.layer.as_deref(),
-            path: None,
+            columns: self.columns.clone(),
+            layer: self.layer.clone(),
+            crs: self.crs.clone(),
         };
-        let name = input.display().to_string();
-        let mut read = if is_dash(input) {
-            read::points(io::stdin().lock(), "<stdin>", how)?
-        } else {
-            let file = std::fs::File::open(input)
-                .map_err(|source| sigdt::Error::Io { path: name.clone(), source })?;
-            read::points(file, &name, Reading { path: Some(input), ..how })?
-        };
-        match (&read.crs, &self.crs) {
-            (Some(declared), Some(given))
-                if declared.epsg.is_some() && declared.epsg != given.epsg =>
-            {
-                anyhow::bail!(
-                    "{name} is in {declared}, but --crs says {given}: sigdt does not transform \
-                     coordinates (reproject the file, or drop --crs)"
-                );
-            }
-            (None, Some(given)) => read.crs = Some(given.clone()),
-            // A definition without a code (an ESRI .prj): --crs names it.
-            (Some(declared), Some(given)) if declared.epsg.is_none() => {
-                read.crs = Some(Crs { epsg: given.epsg, wkt: declared.wkt.clone() });
-            }
-            _ => {}
+        match is_dash(input) {
+            true => sigdt_io::read_stream(io::stdin().lock(), "<stdin>", &options),
+            false => sigdt_io::read_file(input, &options),
         }
-        Ok(read)
     }
 }
 

@@ -18,11 +18,6 @@ mod bench;
 mod cli;
 mod cmd;
 mod format;
-mod gis;
-
-/// Longitude/latitude reconstructed in a local plane: for the Python package.
-#[doc(hidden)]
-pub use gis::local::reconstruct_in_plane;
 mod input;
 mod labelled;
 mod messages;
@@ -30,8 +25,6 @@ mod methods;
 mod output;
 mod png;
 mod progress;
-mod read;
-mod stream;
 mod view;
 
 use std::ffi::OsString;
@@ -44,65 +37,6 @@ use crate::input::Input;
 use crate::messages::UsageError;
 
 pub use bench::runner::set_worker_command;
-
-/// Why [`read_points_file`] failed, so that a caller can raise the matching exception.
-#[derive(Debug)]
-pub enum ReadError {
-    /// The file cannot be opened or read (`sigdt::Error::Io`).
-    Io(sigdt::Error),
-    /// The request does not fit the file (`columns` of a format without columns) or is not
-    /// understood (bad `columns`).
-    Usage(String),
-    /// The file's content is not points: the message names the file (and line).
-    Data(String),
-}
-
-/// The points of the file at `path` in any format the command line reads (with `columns`
-/// as `--columns`, `layer` as `--layer`, and at most `max_points`), one reader for the
-/// binary and the Python package's `read_points`.
-pub fn read_points_file(
-    path: &std::path::Path,
-    columns: Option<&str>,
-    layer: Option<&str>,
-    max_points: usize,
-) -> Result<Vec<sigdt::Point>, ReadError> {
-    let columns = parse_columns(columns)?;
-    let input = Input::new(max_points, columns).with_gis(layer.map(str::to_string), None);
-    input.points(path).map_err(read_error)
-}
-
-/// [`read_points_file`] of `bytes` named `name` (whose extension chooses the reader as a
-/// file's would): for the fuzz targets of the readers.
-#[doc(hidden)]
-pub fn read_points_bytes(
-    bytes: &[u8],
-    name: &str,
-    columns: Option<&str>,
-    max_points: usize,
-) -> Result<Vec<sigdt::Point>, ReadError> {
-    let columns = parse_columns(columns)?;
-    let how = read::Reading { columns: columns.as_ref(), ..read::Reading::at_most(max_points) };
-    read::points(bytes, name, how).map(|read| read.points).map_err(read_error)
-}
-
-/// `columns` as `--columns` reads them.
-fn parse_columns(columns: Option<&str>) -> Result<Option<read::Columns>, ReadError> {
-    columns
-        .map(|text| text.parse().map_err(|m| ReadError::Usage(format!("columns: {m}"))))
-        .transpose()
-}
-
-/// The [`ReadError`] of a reader's error.
-fn read_error(err: anyhow::Error) -> ReadError {
-    if let Some(usage) = err.downcast_ref::<UsageError>() {
-        return ReadError::Usage(usage.message.clone());
-    }
-    match err.downcast::<sigdt::Error>() {
-        Ok(io @ sigdt::Error::Io { .. }) => ReadError::Io(io),
-        Ok(other) => ReadError::Data(other.to_string()),
-        Err(err) => ReadError::Data(messages::one_line(&err)),
-    }
-}
 
 /// Runs the command line `args` (the first one is the program's name) and returns the exit
 /// status. Usage errors found after parsing, and SIGINT, SIGTERM or SIGHUP, end the process
@@ -139,7 +73,7 @@ fn run_command(args: impl IntoIterator<Item = OsString>) -> u8 {
         });
     match result {
         Ok(()) => 0,
-        Err(err) => match err.downcast_ref::<UsageError>() {
+        Err(err) => match usage_error(&err) {
             Some(usage) => usage.exit(Cli::command()),
             None => {
                 messages::note(&format!("sigdt: {}", messages::one_line(&err)));
@@ -147,6 +81,17 @@ fn run_command(args: impl IntoIterator<Item = OsString>) -> u8 {
             }
         },
     }
+}
+
+/// The usage error `err` is, if it is one: the command's own, or a reader's
+/// [`sigdt_io::Misuse`] (an option that does not fit the file).
+fn usage_error(err: &anyhow::Error) -> Option<UsageError> {
+    if let Some(misuse) = err.downcast_ref::<sigdt_io::Misuse>() {
+        let kind = clap::error::ErrorKind::ArgumentConflict;
+        return Some(UsageError { command: "", kind, message: misuse.message.clone() });
+    }
+    err.downcast_ref::<UsageError>()
+        .map(|usage| UsageError { message: usage.message.clone(), ..*usage })
 }
 
 /// The threads to run on: `--threads`, else `RAYON_NUM_THREADS` (rayon's own variable, 0

@@ -32,14 +32,14 @@ fn options(method: &str, leaf_elimination: bool, expect: &str) -> PyResult<Optio
 const DEGREES: &str = "the coordinate system is longitude/latitude";
 
 /// The reconstruction of `pts`, in their local plane when they are longitude and latitude
-/// (`sigdt_cli::reconstruct_in_plane`, the command line's).
+/// (`sigdt_io::reconstruct_in_plane`, as the command line does).
 fn run(
     pts: &[sigdt::Point],
     options: &Options,
     lon_lat: bool,
 ) -> anyhow::Result<sigdt::Reconstruction> {
     match lon_lat {
-        true => sigdt_cli::reconstruct_in_plane(pts, options, DEGREES),
+        true => sigdt_io::reconstruct_in_plane(pts, options, DEGREES),
         false => Ok(sigdt::reconstruct(pts, options)?),
     }
 }
@@ -278,7 +278,7 @@ fn place<'py>(
 }
 
 /// `read_points(path, columns, max_points) -> (n, 2) float64 array`, in any format the CLI
-/// reads, by the CLI's reader.
+/// reads, by its reader (`sigdt_io`).
 #[pyfunction]
 #[pyo3(signature = (path, columns=None, max_points=None, layer=None))]
 fn read_points<'py>(
@@ -290,11 +290,11 @@ fn read_points<'py>(
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let max_points = max_points.unwrap_or(usize::MAX);
     let read =
-        || sigdt_cli::read_points_file(&path, columns.as_deref(), layer.as_deref(), max_points);
+        || sigdt_io::read_points_file(&path, columns.as_deref(), layer.as_deref(), max_points);
     let pts = py.detach(read).map_err(|e| match e {
-        sigdt_cli::ReadError::Io(io) => err(io),
-        sigdt_cli::ReadError::Usage(message) => PyValueError::new_err(message),
-        sigdt_cli::ReadError::Data(message) => ParseError::new_err(message),
+        sigdt_io::Error::Io(io) => err(io),
+        sigdt_io::Error::Usage(message) => PyValueError::new_err(message),
+        sigdt_io::Error::Data(message) => ParseError::new_err(message),
     })?;
     let n = pts.len();
     let flat: Vec<f64> = pts.iter().flatten().copied().collect();

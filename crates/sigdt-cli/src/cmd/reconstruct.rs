@@ -10,10 +10,10 @@ use sigdt::io::OutputFormat as TextFormat;
 use sigdt::{Expect, Method, Options, Reconstruction, Vertices};
 
 use crate::format::{Context, OutputFormat};
-use crate::gis::local::{reconstruct_in_plane, why_degrees};
 use crate::input::Input;
 use crate::messages::{note, UsageError};
 use crate::output::{is_dash, Output};
+use sigdt_io::gis::local::{reconstruct_in_plane, why_degrees};
 
 /// `sigdt reconstruct`.
 #[derive(Debug, Args)]

@@ -4,6 +4,8 @@
 
 mod degenerate;
 mod from_edges;
+#[cfg(feature = "geo-types")]
+mod geo;
 mod polygons;
 
 pub(crate) use degenerate::degenerate_result;

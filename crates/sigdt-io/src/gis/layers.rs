@@ -10,6 +10,7 @@ use super::wkb::Writer;
 
 /// One feature of the `curves` layer.
 pub struct Curve {
+    /// A polygon or a path.
     pub kind: CurveKind,
     /// A polygon's rings (the shell, then its holes; not closed), or a path's one line.
     pub rings: Vec<Vec<Point>>,
@@ -22,7 +23,9 @@ pub struct Curve {
 /// What a curve is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CurveKind {
+    /// A loop, with the loops directly inside it as holes.
     Polygon,
+    /// An open path.
     Path,
 }
 
@@ -50,8 +53,11 @@ impl Curve {
 
 /// What every curve says about the run.
 pub struct Run {
+    /// The method's name.
     pub method: String,
+    /// The result's status.
     pub status: &'static str,
+    /// Whether the result warns (it may not be the points' curves).
     pub warning: bool,
     /// The sampling check's findings, `; `-separated; empty when there are none.
     pub diagnosis: String,
@@ -59,20 +65,26 @@ pub struct Run {
 
 /// One feature of the `left_out` layer.
 pub struct LeftOut {
+    /// The point, as given.
     pub point: Point,
     /// The input index.
     pub row: usize,
+    /// Why it was left out (`outlier`, `inside`).
     pub reason: &'static str,
 }
 
 /// The layers of `rec`, computed by `method` from the input `points`.
 pub struct Layers {
+    /// What every curve says about the run.
     pub run: Run,
+    /// The `curves` layer.
     pub curves: Vec<Curve>,
+    /// The `left_out` layer.
     pub left_out: Vec<LeftOut>,
 }
 
 impl Layers {
+    /// The layers of `rec`, computed by `method` from the input `points`.
     pub fn new(method: Method, points: &[Point], rec: &Reconstruction) -> Layers {
         let vertices = rec.vertex_positions(points);
         let ring = |l: &Vec<usize>| l.iter().map(|&i| vertices[i]).collect::<Vec<Point>>();

@@ -22,8 +22,11 @@ pub const MAGIC: &[u8] = b"SQLite format 3\0";
 
 /// Points of a GeoPackage: which layer, its system, how they were read.
 pub struct Read {
+    /// Every vertex of every feature of the layer, in row order.
     pub points: Vec<Point>,
+    /// The layer's system, if it has one.
     pub crs: Option<Crs>,
+    /// The layer read.
     pub layer: String,
 }
 

@@ -33,7 +33,9 @@ const MAX_HEADER: usize = 10 << 20;
 
 /// Points of a FlatGeobuf file and its system.
 pub struct FgbPoints {
+    /// Every vertex of every feature, in the file's order.
     pub points: Vec<Point>,
+    /// The system the header declares, if any.
     pub crs: Option<Crs>,
 }
 

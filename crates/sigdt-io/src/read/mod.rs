@@ -31,7 +31,7 @@ use sigdt::io::PointFormat;
 use sigdt::Point;
 
 use crate::gis::{fgb, gpkg, shp, Crs};
-use crate::messages::UsageError;
+use crate::Misuse;
 
 pub use table::Columns;
 
@@ -61,10 +61,12 @@ impl Reading<'_> {
 /// coordinate system the file declares, if it does.
 #[derive(Debug)]
 pub struct Points {
+    /// The points, in the file's order.
     pub points: Vec<Point>,
     /// For `--verbose`: "WKT", "columns 'lon' and 'lat' of a table (the header row
     /// skipped)", ...
     pub how: String,
+    /// The coordinate system the file declares (or the one given for it).
     pub crs: Option<Crs>,
     /// Whether a table's columns read are named longitude and latitude.
     pub lon_lat: bool,
@@ -134,9 +136,7 @@ fn uncompressed<R: BufRead>(
         Format::FlatGeobuf => "FlatGeobuf",
         Format::Shapefile => "a Shapefile",
     };
-    let conflict = |message: String| -> anyhow::Error {
-        UsageError { command: "", kind: clap::error::ErrorKind::ArgumentConflict, message }.into()
-    };
+    let conflict = |message: String| -> anyhow::Error { Misuse { message }.into() };
     if how.layer.is_some() && format != Format::GeoPackage {
         return Err(conflict(format!("--layer: {shown} is {kind}, which has no layers to choose")));
     }
@@ -290,7 +290,7 @@ mod tests {
             (&b"\x93NUMPY"[..], "a.npy", "a NumPy array"),
         ] {
             let err = with_columns(bytes, name).unwrap_err();
-            let usage = err.downcast_ref::<UsageError>().expect("a usage error (exit 2)");
+            let usage = err.downcast_ref::<Misuse>().expect("a usage error (exit 2)");
             assert_eq!(
                 usage.message,
                 format!("--columns: {name} is {kind}, which has no columns to choose")

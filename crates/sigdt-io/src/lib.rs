@@ -1,0 +1,219 @@
+//! Reading points and writing outlines the way GIS users hold them, for any Rust program:
+//! the readers and writers of the `sigdt` command line and Python package.
+//!
+//! - [`read`]: plain `x y` files and `.gtn` (through [`sigdt::io`]), CSV and other tables
+//!   with chosen columns, WKT, GeoJSON, NumPy `.npy`, each also gzip-compressed, and the GIS
+//!   formats of [`gis`]; the format is found from the bytes and the name.
+//! - [`gis`]: GeoPackage, FlatGeobuf and Shapefile points in, GeoPackage and FlatGeobuf
+//!   layers out, the coordinate system carried from one to the other, and longitude and
+//!   latitude reconstructed in a local plane ([`reconstruct_in_plane`]).
+//!
+//! Every reader validates at the entry: it stops at `max_points` before it allocates for
+//! more, trusts no size a file announces before its bytes arrive, and names the file (and
+//! line, where there is one) in every error.
+//!
+//! ```
+//! use sigdt_io::{read_file, ReadOptions};
+//!
+//! let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/gis/islands_4326.gpkg");
+//! let read = read_file(path.as_ref(), &ReadOptions::at_most(1_000_000))?;
+//! assert_eq!(read.crs.as_ref().and_then(|crs| crs.epsg), Some(4326));
+//! // Degrees: reconstructed in a local plane, so that lengths are ground lengths.
+//! let outlines = read.reconstruct(&sigdt::Options::default())?;
+//! assert!(outlines.loops.len() > 1);
+//! # Ok::<(), anyhow::Error>(())
+//! ```
+//!
+//! `examples/outlines.rs` writes the outlines of a GeoPackage's points as a GeoPackage in
+//! their coordinate system.
+pub mod gis;
+pub mod read;
+mod stream;
+
+use std::fmt;
+use std::io::Read;
+use std::path::Path;
+
+pub use gis::local::reconstruct_in_plane;
+pub use gis::Crs;
+pub use read::{Columns, Points, Reading};
+use sigdt::Point;
+
+/// A request that does not fit the file read: `layer` for a format without layers, or
+/// `columns` for one without columns. The caller's usage is wrong, not the file (the
+/// command line exits with status 2 for it).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Misuse {
+    /// What does not fit, naming the option and the file.
+    pub message: String,
+}
+
+impl fmt::Display for Misuse {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for Misuse {}
+
+/// Why reading points failed, so that a caller can tell its user what to change.
+#[derive(Debug)]
+pub enum Error {
+    /// The file cannot be opened or read (`sigdt::Error::Io`).
+    Io(sigdt::Error),
+    /// The request does not fit the file ([`Misuse`]) or is not understood (bad `columns`).
+    Usage(String),
+    /// The file's content is not points: the message names the file (and line).
+    Data(String),
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::Io(err) => err.fmt(f),
+            Error::Usage(message) | Error::Data(message) => f.write_str(message),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+impl From<anyhow::Error> for Error {
+    fn from(err: anyhow::Error) -> Error {
+        if let Some(misuse) = err.downcast_ref::<Misuse>() {
+            return Error::Usage(misuse.message.clone());
+        }
+        match err.downcast::<sigdt::Error>() {
+            Ok(io @ sigdt::Error::Io { .. }) => Error::Io(io),
+            Ok(other) => Error::Data(other.to_string()),
+            Err(err) => Error::Data(one_line(&err)),
+        }
+    }
+}
+
+/// The one-line message for `err`: its own text, then each cause whose text it does not
+/// already contain, all on one line.
+pub fn one_line(err: &anyhow::Error) -> String {
+    let mut text = err.to_string();
+    for cause in err.chain().skip(1) {
+        let cause = cause.to_string();
+        if !text.contains(&cause) {
+            text.push_str(": ");
+            text.push_str(&cause);
+        }
+    }
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// How to read a point file: the most points to accept, a table's columns, a GeoPackage's
+/// layer, and the coordinate system of input that declares none.
+#[derive(Debug, Clone)]
+pub struct ReadOptions {
+    /// Reading stops with an error after this many points.
+    pub max_points: usize,
+    /// The x and y columns of a table.
+    pub columns: Option<Columns>,
+    /// The layer of a GeoPackage.
+    pub layer: Option<String>,
+    /// The coordinate system of input that does not declare one (a declared one that
+    /// differs is an error: sigdt does not transform coordinates).
+    pub crs: Option<Crs>,
+}
+
+impl ReadOptions {
+    /// At most `max_points` points, in the file's own columns, layer and system.
+    pub fn at_most(max_points: usize) -> ReadOptions {
+        ReadOptions { max_points, columns: None, layer: None, crs: None }
+    }
+
+    fn reading<'a>(&'a self, path: Option<&'a Path>) -> Reading<'a> {
+        let (columns, layer) = (self.columns.as_ref(), self.layer.as_deref());
+        Reading { max_points: self.max_points, columns, layer, path }
+    }
+}
+
+impl Points {
+    /// The reconstruction of these points with `options`: in their local plane when they
+    /// are longitude and latitude (their system says so, or a table's columns are named so;
+    /// [`reconstruct_in_plane`]), else in their own coordinates. The indices refer to
+    /// [`Points::points`], as always.
+    pub fn reconstruct(&self, options: &sigdt::Options) -> anyhow::Result<sigdt::Reconstruction> {
+        match gis::local::why_degrees(self.crs.as_ref(), self.lon_lat) {
+            Some(why) => reconstruct_in_plane(&self.points, options, &why),
+            None => Ok(sigdt::reconstruct(&self.points, options)?),
+        }
+    }
+}
+
+/// The points of the file at `path` in any format of [`read`], how they were read, and
+/// their coordinate system.
+pub fn read_file(path: &Path, options: &ReadOptions) -> anyhow::Result<Points> {
+    let name = path.display().to_string();
+    let file = std::fs::File::open(path)
+        .map_err(|source| sigdt::Error::Io { path: name.clone(), source })?;
+    let read = read::points(file, &name, options.reading(Some(path)))?;
+    with_given_crs(read, &name, options.crs.as_ref())
+}
+
+/// [`read_file`] of a stream named `name` in errors (`<stdin>`, say): no GeoPackage
+/// (SQLite reads a file in place) and no Shapefile `.prj`.
+pub fn read_stream(reader: impl Read, name: &str, options: &ReadOptions) -> anyhow::Result<Points> {
+    let read = read::points(reader, name, options.reading(None))?;
+    with_given_crs(read, name, options.crs.as_ref())
+}
+
+/// `read` with the coordinate system `given` where the file declares none or declares one
+/// without a code; a different declared code is an error.
+fn with_given_crs(mut read: Points, name: &str, given: Option<&Crs>) -> anyhow::Result<Points> {
+    match (&read.crs, given) {
+        (Some(declared), Some(given)) if declared.epsg.is_some() && declared.epsg != given.epsg => {
+            anyhow::bail!(
+                "{name} is in {declared}, but --crs says {given}: sigdt does not transform \
+                 coordinates (reproject the file, or drop --crs)"
+            );
+        }
+        (None, Some(given)) => read.crs = Some(given.clone()),
+        // A definition without a code (an ESRI .prj): the given system names it.
+        (Some(declared), Some(given)) if declared.epsg.is_none() => {
+            read.crs = Some(Crs { epsg: given.epsg, wkt: declared.wkt.clone() });
+        }
+        _ => {}
+    }
+    Ok(read)
+}
+
+/// The points of the file at `path` in any format of [`read`] (with `columns` as
+/// `--columns` spells them, `layer` of a GeoPackage, and at most `max_points`): the
+/// Python package's `read_points`.
+pub fn read_points_file(
+    path: &Path,
+    columns: Option<&str>,
+    layer: Option<&str>,
+    max_points: usize,
+) -> Result<Vec<Point>, Error> {
+    let options = ReadOptions {
+        columns: parse_columns(columns)?,
+        layer: layer.map(str::to_string),
+        ..ReadOptions::at_most(max_points)
+    };
+    Ok(read_file(path, &options)?.points)
+}
+
+/// [`read_points_file`] of `bytes` named `name` (whose extension chooses the reader as a
+/// file's would): for the fuzz targets of the readers.
+#[doc(hidden)]
+pub fn read_points_bytes(
+    bytes: &[u8],
+    name: &str,
+    columns: Option<&str>,
+    max_points: usize,
+) -> Result<Vec<Point>, Error> {
+    let columns = parse_columns(columns)?;
+    let how = Reading { columns: columns.as_ref(), ..Reading::at_most(max_points) };
+    Ok(read::points(bytes, name, how)?.points)
+}
+
+/// `columns` as `--columns` spells them.
+fn parse_columns(columns: Option<&str>) -> Result<Option<Columns>, Error> {
+    columns.map(|text| text.parse().map_err(|m| Error::Usage(format!("columns: {m}")))).transpose()
+}
