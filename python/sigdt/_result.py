@@ -252,7 +252,7 @@ class Reconstruction:
 
         Needs the optional dependency ``geopandas``.
         """
-        from .geopandas import to_geopandas
+        from ._geodataframe import to_geopandas
 
         return to_geopandas(self)
 

@@ -135,8 +135,9 @@ fn run_subcommand(command: Command, input: &Input) -> anyhow::Result<()> {
         Command::Render(args) => cmd::render::run(&args, input),
         Command::Gallery(args) => cmd::gallery::run(&args),
         Command::View(args) => cmd::view::run(&args, input),
-        Command::Completions(args) => cmd::completions::completions(&args),
-        Command::Manpages(args) => cmd::completions::manpages(&args),
+        // The definitions are passed down, so that no command imports the command line.
+        Command::Completions(args) => cmd::completions::completions(&args, Cli::command()),
+        Command::Manpages(args) => cmd::completions::manpages(&args, Cli::command()),
         Command::BenchWorker(args) => cmd::bench_worker::run(&args),
     }
 }

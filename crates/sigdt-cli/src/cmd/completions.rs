@@ -7,10 +7,9 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use anyhow::{Context, Result};
-use clap::{Args, CommandFactory};
+use clap::Args;
 use clap_complete::Shell;
 
-use crate::cli::Cli;
 use crate::messages::note;
 
 /// `sigdt completions`.
@@ -34,10 +33,10 @@ pub struct ManpagesArgs {
     pub out: PathBuf,
 }
 
-/// `sigdt completions`: the script on standard output.
-pub fn completions(args: &CompletionsArgs) -> Result<()> {
+/// `sigdt completions`: the script of the command line `cli` on standard output.
+pub fn completions(args: &CompletionsArgs, mut cli: clap::Command) -> Result<()> {
     let mut script = Vec::new();
-    clap_complete::generate(args.shell, &mut Cli::command(), "sigdt", &mut script);
+    clap_complete::generate(args.shell, &mut cli, "sigdt", &mut script);
     let mut out = std::io::stdout().lock();
     match out.write_all(&script).and_then(|()| out.flush()) {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(e).context("<stdout>"),
@@ -45,11 +44,11 @@ pub fn completions(args: &CompletionsArgs) -> Result<()> {
     }
 }
 
-/// `sigdt manpages`: one page per command, the subcommands' pages named `sigdt-NAME.1`.
-pub fn manpages(args: &ManpagesArgs) -> Result<()> {
+/// `sigdt manpages`: one page per command of the command line `cli`, the subcommands' pages
+/// named `sigdt-NAME.1`.
+pub fn manpages(args: &ManpagesArgs, cli: clap::Command) -> Result<()> {
     std::fs::create_dir_all(&args.out)
         .with_context(|| format!("{}: cannot create the folder", args.out.display()))?;
-    let cli = Cli::command();
     let mut pages = vec![("sigdt.1".to_string(), cli.clone())];
     for sub in cli.get_subcommands().filter(|s| !s.is_hide_set()) {
         let name = format!("sigdt-{}", sub.get_name());

@@ -36,10 +36,14 @@ use std::path::Path;
 
 use svgtypes::{PathParser, PathSegment, SimplePathSegment, SimplifyingPathParser};
 
-use super::eps_sampling::MAX_SEGMENTS;
 use crate::power_of_two::scale;
 use sigdt::internals::distance;
 use sigdt::{Error, Point, Result};
+
+/// The most cubic segments one path may have: 4·10⁶ dense points when ε-sampled, a few
+/// hundred megabytes for the triangulation and the lfs (a 20,000-segment polygon used to ask
+/// for gigabytes).
+pub const MAX_SEGMENTS: usize = 4096;
 
 /// A chain of cubic Bézier segments, each `[start, control1, control2, end]`, where every
 /// segment starts where the previous one ends (and, if `closed`, the last one ends where the

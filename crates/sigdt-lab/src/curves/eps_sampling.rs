@@ -42,7 +42,7 @@
 //! \[MOW22\] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 //! \[OMW21\] S. Ohrhallinger, J. Peethambaran, A. Parakkat, T. Dey, R. Muthuganapathy.
 //! 2D Points Curve Reconstruction Survey and Benchmark. 2021.
-use super::bezier::fixed_size_power;
+use super::bezier::{fixed_size_power, MAX_SEGMENTS};
 use super::BezierPath;
 use crate::power_of_two::scale;
 use sigdt::internals::{distance, KdTree};
@@ -51,10 +51,6 @@ use sigdt::{Edge, Error, Point, Result, Triangulation};
 
 /// Dense evaluation parameters per cubic segment.
 pub const DENSE_STEPS: usize = 1000;
-
-/// The most cubic segments one path may have: 4·10⁶ dense points, a few hundred megabytes
-/// for the triangulation and the lfs (a 20,000-segment polygon used to ask for gigabytes).
-pub const MAX_SEGMENTS: usize = 4096;
 
 /// Parameter precision of the bisections, in segment units.
 const PRECISION: f64 = 1e-9;

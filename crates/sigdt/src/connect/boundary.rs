@@ -23,21 +23,11 @@
 //! - [MOW22] D. Marin, S. Ohrhallinger, M. Wimmer. SIGDT: 2D Curve Reconstruction. 2022.
 //!
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
+pub use super::star_counts::VertexClass;
 use super::star_counts::{StarCounts, StarTable};
 use super::trace::{Phase, Step, Trace};
 use crate::delaunay::{prev, Triangulation, EMPTY};
 use crate::graph::{EdgeMask, UnionFind};
-
-/// How a vertex sits on the boundary.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum VertexClass {
-    /// Exactly one exterior and one interior wedge, no dangling edge.
-    Manifold,
-    /// Pinched, dangling, or otherwise not (yet) a polygon vertex.
-    NonManifold,
-    /// Surrounded by interior triangles: not on the boundary.
-    Interior,
-}
 
 /// Labels, boundary and classes of one run.
 pub struct Boundary<'a> {

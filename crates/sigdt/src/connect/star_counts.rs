@@ -6,9 +6,19 @@
 //! marked by an escape byte. Updating and reading stay O(1); the table is a quarter of the
 //! size of three `u32`s a vertex, and it is alive through inflating and sculpting, at the
 //! peak memory of a run.
-use super::boundary::VertexClass;
 use crate::delaunay::Triangulation;
 use std::collections::HashMap;
+
+/// How a vertex sits on the boundary.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VertexClass {
+    /// Exactly one exterior and one interior wedge, no dangling edge.
+    Manifold,
+    /// Pinched, dangling, or otherwise not (yet) a polygon vertex.
+    NonManifold,
+    /// Surrounded by interior triangles: not on the boundary.
+    Interior,
+}
 
 /// The edges at a vertex that decide its class.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
