@@ -24,6 +24,7 @@
 #![forbid(unsafe_code)]
 
 pub mod baselines;
+mod bits;
 pub mod connect;
 pub mod delaunay;
 mod error;
@@ -38,6 +39,7 @@ pub mod proximity;
 pub mod result;
 pub mod samplers;
 mod sampling_check;
+mod segment_grid;
 pub mod sig_auto;
 pub mod sig_connect2d;
 

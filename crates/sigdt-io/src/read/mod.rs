@@ -4,10 +4,10 @@
 //!
 //! The format is chosen once, at the entry, in this order:
 //! 1. gzip magic bytes: decompressed on the fly, and the name without `.gz` decides the rest;
-//! 2. magic bytes: a NumPy array ([`npy`]), a GeoPackage (SQLite; read in place, so only
+//! 2. magic bytes: a NumPy array (`npy.rs`), a GeoPackage (SQLite; read in place, so only
 //!    from a file), FlatGeobuf or a Shapefile `.shp` (its `.prj` read for the coordinate
 //!    system) ([`crate::gis`]);
-//! 3. `--columns`: a table ([`table`]);
+//! 3. `--columns`: a table (`table.rs`);
 //! 4. the extension: `.wkt`, `.geojson` or `.json`, `.csv` or `.tsv` with more than two
 //!    fields, `;` separators or quotes;
 //! 5. the first character that is not white space: `{` or `[` is GeoJSON, a WKT keyword is

@@ -1,4 +1,5 @@
 //! A set of Delaunay edges with one bit per half-edge.
+use crate::bits::word_bit;
 use crate::delaunay::{Triangulation, EMPTY};
 
 /// A set of Delaunay edges, one bit per half-edge (both halves of an edge always agree):
@@ -8,13 +9,6 @@ use crate::delaunay::{Triangulation, EMPTY};
 pub struct EdgeMask {
     bits: Vec<u64>,
     count: usize,
-}
-
-/// Bit `h` of `words` (half-edge `h` is bit `h % 64` of word `h / 64`), the layout of
-/// [`EdgeMask`] and of [`EdgeMask::from_words`]'s argument.
-#[inline]
-pub(crate) fn word_bit(words: &[u64], h: u32) -> bool {
-    words[(h / 64) as usize] >> (h % 64) & 1 == 1
 }
 
 impl EdgeMask {

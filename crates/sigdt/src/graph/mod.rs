@@ -7,6 +7,5 @@ mod union_find;
 
 pub use chains::{chains, Chain};
 pub(crate) use chains::{chains_of_slots, two_slots};
-pub(crate) use edge_mask::word_bit;
 pub use edge_mask::EdgeMask;
 pub use union_find::UnionFind;

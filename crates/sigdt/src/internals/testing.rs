@@ -6,9 +6,9 @@
 //! manifold status means every distinct point has degree 2; no two output edges cross, unless
 //! the status is [`Crossing`](Status::Crossing), which needs a crossing, or
 //! [`Unfinished`](Status::Unfinished), whose edges may cross.
-use crate::geometry::{segments_cross, Edge, Point};
+use crate::geometry::{Edge, Point};
 use crate::result::{LeftOutReason, Reconstruction, Status, Vertices};
-use std::collections::HashMap;
+use crate::segment_grid::first_crossing;
 
 /// Checks the output invariants of `rec` for `points`; the error says what is violated.
 /// With [`Vertices::New`] the edges, loops and paths are checked on the new vertices, while
@@ -146,49 +146,6 @@ pub fn filter_edges(
 ) -> Vec<Edge> {
     let dt = crate::delaunay::Triangulation::new(points).expect("valid test points");
     dt.to_input_edges(filter(&dt))
-}
-
-/// The first pair of edges that cross at a point interior to both, if any. Uses a uniform
-/// grid over the edges' bounding box, so it is fast on curve-like outputs.
-pub fn first_crossing(points: &[Point], edges: &[Edge]) -> Option<(Edge, Edge)> {
-    if edges.len() < 2 {
-        return None;
-    }
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in edges.iter().flatten().map(|&i| points[i]) {
-        for a in 0..2 {
-            lo[a] = lo[a].min(p[a]);
-            hi[a] = hi[a].max(p[a]);
-        }
-    }
-    let cells = (edges.len() as f64).sqrt().ceil().max(1.0);
-    let size = [0, 1].map(|a| ((hi[a] - lo[a]) / cells).max(f64::MIN_POSITIVE));
-    let cell = |p: Point, a: usize| (((p[a] - lo[a]) / size[a]) as i64).clamp(0, cells as i64 - 1);
-    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-    for (k, &[i, j]) in edges.iter().enumerate() {
-        let (p, q) = (points[i], points[j]);
-        let (x0, x1) = (cell(p, 0).min(cell(q, 0)), cell(p, 0).max(cell(q, 0)));
-        let (y0, y1) = (cell(p, 1).min(cell(q, 1)), cell(p, 1).max(cell(q, 1)));
-        for x in x0..=x1 {
-            for y in y0..=y1 {
-                grid.entry((x, y)).or_default().push(k);
-            }
-        }
-    }
-    let mut keys: Vec<_> = grid.keys().copied().collect();
-    keys.sort_unstable();
-    for key in keys {
-        let bucket = &grid[&key];
-        for (s, &e) in bucket.iter().enumerate() {
-            for &f in &bucket[s + 1..] {
-                let ([a, b], [c, d]) = (edges[e], edges[f]);
-                if segments_cross(points[a], points[b], points[c], points[d]) {
-                    return Some((edges[e].min(edges[f]), edges[e].max(edges[f])));
-                }
-            }
-        }
-    }
-    None
 }
 
 #[cfg(test)]

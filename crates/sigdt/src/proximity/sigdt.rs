@@ -20,10 +20,10 @@
 //! [MOW22]: https://doi.org/10.1111/cgf.14654
 //! [Tou88]: https://doi.org/10.1016/0167-8655(88)90029-4
 use super::nearest::nearest_vertex_distances;
+use crate::bits::word_bit;
 use crate::delaunay::{Shape, Triangulation, EMPTY};
 use crate::geometry::Edge;
 use crate::geometry::{distance, squared_distance};
-use crate::graph::word_bit;
 use crate::graph::EdgeMask;
 
 /// Relative slack of the SIG test: `|uv| <= (r(u) + r(v)) · (1 + TIE_SLACK)`.

@@ -40,6 +40,7 @@
 //! O(n log n) per level (three levels at most, on fewer points each), plus O(n) per pass
 //! of crossing repair (at most [`MAX_REPAIR_PASSES`]).
 use crate::delaunay::brio::hilbert_order;
+use crate::segment_grid::visit_pairs_sharing_cells;
 use std::collections::HashMap;
 
 use super::{own_scale_reading, Steps};
@@ -296,34 +297,20 @@ fn meeting_edges(dt: &Triangulation, loops: &[Vec<u32>]) -> Vec<((usize, usize),
         return Vec::new();
     }
     let cell = |p: Point| ((p[0] / longest).floor() as i64, (p[1] / longest).floor() as i64);
-    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-    for (k, &e) in edges.iter().enumerate() {
-        let (a, b) = ends(e);
-        let (ca, cb) = (cell(dt.point(a)), cell(dt.point(b)));
-        for x in ca.0.min(cb.0)..=ca.0.max(cb.0) {
-            for y in ca.1.min(cb.1)..=ca.1.max(cb.1) {
-                grid.entry((x, y)).or_default().push(k);
-            }
-        }
-    }
+    let segment = |k: usize| {
+        let (a, b) = ends(edges[k]);
+        (dt.point(a), dt.point(b))
+    };
     let mut found = Vec::new();
-    let mut keys: Vec<_> = grid.keys().copied().collect();
-    keys.sort_unstable();
-    for key in keys {
-        let bucket = &grid[&key];
-        for (s, &e) in bucket.iter().enumerate() {
-            for &f in &bucket[s + 1..] {
-                let (ea, eb) = (edges[e].min(edges[f]), edges[e].max(edges[f]));
-                let ((a, b), (c, d)) = (ends(ea), ends(eb));
-                if a == c || a == d || b == c || b == d {
-                    continue;
-                }
-                if segments_meet(dt.point(a), dt.point(b), dt.point(c), dt.point(d)) {
-                    found.push((ea, eb));
-                }
-            }
+    visit_pairs_sharing_cells(edges.len(), segment, cell, |e, f| {
+        let (ea, eb) = (edges[e].min(edges[f]), edges[e].max(edges[f]));
+        let ((a, b), (c, d)) = (ends(ea), ends(eb));
+        let adjacent = a == c || a == d || b == c || b == d;
+        if !adjacent && segments_meet(dt.point(a), dt.point(b), dt.point(c), dt.point(d)) {
+            found.push((ea, eb));
         }
-    }
+        false
+    });
     found.sort_unstable();
     found.dedup();
     found

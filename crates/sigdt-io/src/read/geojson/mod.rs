@@ -57,7 +57,8 @@ pub fn read(reader: impl Read, name: &str, max_points: usize) -> Result<Vec<Poin
     read_with_crs(reader, name, max_points).map(|(points, _)| points)
 }
 
-/// [`read`], and the name in the legacy `crs` member if the document has one (the first).
+/// The points of the GeoJSON document of `reader` (module docs), and the name in the legacy
+/// `crs` member if the document has one (the first).
 pub fn read_with_crs(
     mut reader: impl Read,
     name: &str,

@@ -75,10 +75,10 @@ mod visit;
 
 use crate::delaunay::Triangulation;
 use crate::geometry::Point;
-use crate::internals::first_crossing;
 use crate::result::{
     degenerate_result, from_vertex_pairs, LeftOut, LeftOutReason, Reconstruction, Stats,
 };
+use crate::segment_grid::first_crossing;
 use crate::Status;
 pub(crate) use fit::{spread, Fit};
 use state::{Points, State, NONE};
