@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build demo test test-long lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-networks data-outlines data-vertices wheel wheel-test man api-docs
+.PHONY: browser all build cli-binary demo test test-long lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-networks data-outlines data-vertices wheel wheel-test man api-docs
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -59,8 +59,15 @@ $(VENV)/.installed: requirements-dev.txt
 	touch $@
 
 ## py-build: build the extension in release mode into .venv (maturin develop).
-py-build: $(VENV)/.installed
+py-build: $(VENV)/.installed cli-binary
 	VIRTUAL_ENV=$(abspath $(VENV)) $(VENV)/bin/maturin develop --release --locked --quiet
+
+# The command line the package's `sigdt` script runs (python/sigdt/_cli.py), stripped, where
+# the wheel and the editable install find it (gitignored; named in pyproject.toml).
+CLI_BINARY := python/sigdt/_bin/sigdt
+cli-binary: build
+	mkdir -p $(dir $(CLI_BINARY))
+	strip -o $(CLI_BINARY).tmp $(TARGET_DIR)/release/sigdt && mv $(CLI_BINARY).tmp $(CLI_BINARY)
 
 ## api-docs: the Python API reference from the docstrings (pdoc, numpydoc style) in
 ## target/api-docs; any warning fails it (make test runs it).
@@ -72,7 +79,7 @@ api-docs: py-build
 ## wheel: the Python package as a stripped abi3 wheel in target/wheels (maturin; tagged
 ## manylinux by maturin's own symbol check, so it installs without a Rust toolchain).
 WHEELS := $(TARGET_DIR)/wheels
-wheel: $(VENV)/.installed
+wheel: $(VENV)/.installed cli-binary
 	rm -f $(WHEELS)/sigdt-*.whl
 	VIRTUAL_ENV=$(abspath $(VENV)) $(VENV)/bin/maturin build --release --locked --strip --quiet \
 	  --out $(WHEELS)

@@ -108,7 +108,6 @@ def read_points(
 def place(
     points: npt.NDArray[np.float64], width: float
 ) -> tuple[float, npt.NDArray[np.float64]]: ...  # (height, (n, 2) pixels, y down)
-def cli_main(argv: list[str], worker: list[str]) -> int: ...
 def evaluate(
     points: npt.NDArray[np.float64], edges: npt.NDArray[np.int64], gt: npt.NDArray[np.int64]
 ) -> dict[str, bool | int | float | None]: ...

@@ -1,9 +1,9 @@
 //! `sigdt`: reconstruct curves from unorganised 2D points on the command line.
 //!
-//! The command line is a library so that two programs can run it: the `sigdt` binary
-//! (`main.rs`) and the Python package's `sigdt` script and `python -m sigdt` (through the
-//! extension `sigdt._core`). It is not an API: [`run`] takes the arguments and returns the
-//! exit status, and a usage error or a signal may end the process from inside.
+//! The command line is a library behind a thin `main.rs`, and the same binary is what the
+//! Python wheel ships as its `sigdt` script (`python/sigdt/_cli.py` runs it). It is not an
+//! API: [`run`] takes the arguments and returns the exit status, and a usage error or a
+//! signal may end the process from inside. Readers and writers are the crate `sigdt-io`.
 //!
 //! [`run`] only parses the arguments, runs the command and maps errors to exit statuses:
 //! 0 for success, 1 for an error (one line `sigdt: <message>` on stderr), 2 for a usage
@@ -35,8 +35,6 @@ use clap::{CommandFactory, Parser};
 use crate::cli::{Cli, Command};
 use crate::input::Input;
 use crate::messages::UsageError;
-
-pub use bench::runner::set_worker_command;
 
 /// Runs the command line `args` (the first one is the program's name) and returns the exit
 /// status. Usage errors found after parsing, and SIGINT, SIGTERM or SIGHUP, end the process

@@ -301,18 +301,6 @@ fn read_points<'py>(
     flat.into_pyarray(py).reshape([n, 2])
 }
 
-/// `cli_main(argv, worker) -> int`: runs the `sigdt` command line with `argv` (its first item
-/// the program's name) and returns its exit status; `worker` is the command that starts
-/// `sigdt` in a new process (for `sigdt bench`'s workers). The GIL is released throughout.
-/// Like the binary, a usage error or a signal ends the process from inside.
-#[pyfunction]
-fn cli_main(py: Python<'_>, argv: Vec<std::ffi::OsString>, worker: Vec<std::ffi::OsString>) -> u8 {
-    py.detach(move || {
-        sigdt_cli::set_worker_command(worker);
-        sigdt_cli::run(argv)
-    })
-}
-
 /// The extension module.
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -324,7 +312,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(proximity_graph, m)?)?;
     m.add_function(wrap_pyfunction!(read_points, m)?)?;
     m.add_function(wrap_pyfunction!(place, m)?)?;
-    m.add_function(wrap_pyfunction!(cli_main, m)?)?;
     m.add_function(wrap_pyfunction!(eval::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(eval::graph_epsilon, m)?)?;
     m.add_function(wrap_pyfunction!(eval::graph_overlap, m)?)?;

@@ -5,12 +5,12 @@
 //! limit is recorded as a failure or a time-out of that one pair; the run goes on.
 
 use std::collections::HashMap;
-use std::ffi::{OsStr, OsString};
+use std::ffi::OsStr;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Mutex, OnceLock};
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result};
@@ -35,37 +35,15 @@ pub struct Plan<'a> {
     pub jobs: usize,
 }
 
-/// The command that starts a worker when this process is not the `sigdt` binary itself.
-static WORKER_COMMAND: OnceLock<Vec<OsString>> = OnceLock::new();
-
-/// Sets the program and leading arguments that run `sigdt` in a new process, for hosts of
-/// the command line other than the binary: the Python package sets `[python, -m, sigdt]`.
-/// The first call wins.
-pub fn set_worker_command(command: Vec<OsString>) {
-    let _ = WORKER_COMMAND.set(command);
-}
-
-/// The program that workers run, and its leading arguments: the command set by
-/// [`set_worker_command`], else this process's own executable. On Linux that is
+/// The program that workers run: this process's own executable. On Linux that is
 /// `/proc/self/exe`, which stays the running binary even when a rebuild replaces the file at
 /// its path during a long bench (the path would then start the new binary, or nothing).
-fn worker_exe() -> Result<WorkerExe> {
-    if let Some([program, leading @ ..]) = WORKER_COMMAND.get().map(Vec::as_slice) {
-        return Ok(WorkerExe { program: PathBuf::from(program), leading: leading.to_vec() });
-    }
+fn worker_exe() -> Result<PathBuf> {
     let own = Path::new("/proc/self/exe");
-    let program = if own.exists() {
-        own.to_path_buf()
-    } else {
-        std::env::current_exe().context("cannot locate the sigdt executable")?
-    };
-    Ok(WorkerExe { program, leading: Vec::new() })
-}
-
-/// How to start `sigdt` in a new process: a program and its leading arguments.
-struct WorkerExe {
-    program: PathBuf,
-    leading: Vec<OsString>,
+    match own.exists() {
+        true => Ok(own.to_path_buf()),
+        false => std::env::current_exe().context("cannot locate the sigdt executable"),
+    }
 }
 
 /// Runs `plan` over `cases`; entries are in (case, method) order whatever `jobs` is.
@@ -104,7 +82,7 @@ pub fn run_all(plan: &Plan<'_>, cases: &[Case]) -> Result<Vec<Entry>> {
 /// Runs one worker on `case`, sampled at `spacing` if known, and turns whatever happened into
 /// an [`Outcome`].
 fn run_one(
-    exe: &WorkerExe,
+    exe: &Path,
     plan: &Plan<'_>,
     case: &dataset::Case,
     spacing: Option<&f64>,
@@ -121,13 +99,12 @@ fn run_one(
 /// Starts `sigdt bench-worker ARGS POINTS GT [--truth TRUTH] [--curve XY --curve-gt GT]
 /// [--spacing S]` on a case's files, its output piped.
 fn spawn_worker<A: AsRef<OsStr>>(
-    exe: &WorkerExe,
+    exe: &Path,
     files: &dataset::CaseFiles,
     spacing: Option<&f64>,
     args: impl IntoIterator<Item = A>,
 ) -> std::io::Result<Child> {
-    let mut command = Command::new(&exe.program);
-    command.args(&exe.leading);
+    let mut command = Command::new(exe);
     command.arg("bench-worker").args(args).arg(&files.points).arg(&files.gt);
     if let Some(truth) = &files.truth {
         command.arg("--truth").arg(truth);

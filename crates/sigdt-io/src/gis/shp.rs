@@ -90,10 +90,21 @@ fn record(content: &[u8], out: &mut Vec<Point>, max: usize) -> Result<(), String
             let mut starts = (0..parts).map(|k| int(44 + 4 * k)).collect::<Result<Vec<_>, _>>()?;
             starts.push(n);
             let ring = matches!(shape, 5 | 15 | 25);
-            for pair in starts.windows(2) {
+            for (k, pair) in starts.windows(2).enumerate() {
                 let (start, end) = (pair[0], pair[1]);
-                if start > end || end > n {
-                    return Err(format!("part start {start} outside the {n} points"));
+                // `end` is the next part's start (the point count after the last part): the
+                // value to name when the two disagree.
+                if end > n {
+                    return Err(format!(
+                        "part {} starts at point {end}, past the {n} points",
+                        k + 1
+                    ));
+                }
+                if start > end {
+                    let next = k + 1;
+                    return Err(format!(
+                        "part {next} starts at point {end}, before part {k} (at {start})"
+                    ));
                 }
                 let first = out.len();
                 for k in start..end {
@@ -191,6 +202,24 @@ mod tests {
         assert!(err.contains("ends inside its 100-byte header"), "{err}");
         let err = read(&shp(&[point(f64::NAN, 0.0)])[..], "t.shp", 10).unwrap_err().to_string();
         assert!(err.contains("record 1: coordinate NaN 0.0 is not finite"), "{err}");
+        // Parts whose starts disagree with the points: the message names the start that
+        // is wrong (it named the first part's, which was right).
+        let two_parts = |second: i32| {
+            let mut c = polygon(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]);
+            c[36..40].copy_from_slice(&2i32.to_le_bytes());
+            c.splice(48..48, second.to_le_bytes());
+            read(&shp(&[c])[..], "t.shp", 10).unwrap_err().to_string()
+        };
+        let err = two_parts(5);
+        assert!(err.ends_with("record 1: part 1 starts at point 5, past the 3 points"), "{err}");
+        let err = two_parts(-1);
+        assert!(err.contains("record 1: "), "{err}");
+        let mut c = polygon(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]);
+        c[36..40].copy_from_slice(&2i32.to_le_bytes());
+        c[44..48].copy_from_slice(&2i32.to_le_bytes());
+        c.splice(48..48, 1i32.to_le_bytes());
+        let err = read(&shp(&[c])[..], "t.shp", 10).unwrap_err().to_string();
+        assert!(err.ends_with("part 1 starts at point 1, before part 0 (at 2)"), "{err}");
         let many: Vec<_> = (0..11).map(|k| point(k as f64, 0.0)).collect();
         let err = read(&shp(&many)[..], "t.shp", 10).unwrap_err().to_string();
         assert!(err.contains("record 11: more than 10 points"), "{err}");
