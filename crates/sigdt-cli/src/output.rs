@@ -14,6 +14,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 use anyhow::{anyhow, bail, Result};
+use sigdt_io::gis::shp;
 
 /// The destination of a command's data.
 #[derive(Debug)]
@@ -49,6 +50,13 @@ impl Output {
         }
         if !is_dash(input) && same_file(given, input) {
             bail!("{shown}: output is the input file; refusing to overwrite it");
+        }
+        if let Some(sidecar) = shp::sidecars(input).iter().find(|s| same_file(given, s)) {
+            bail!(
+                "{shown}: output is {}, which belongs with the input Shapefile; refusing to \
+                 overwrite it",
+                sidecar.display()
+            );
         }
         // Write through a symbolic link rather than replace it.
         let path = link_target(given)?;

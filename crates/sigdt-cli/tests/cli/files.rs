@@ -74,6 +74,24 @@ fn output_equal_to_input_is_refused() {
 }
 
 #[test]
+fn the_files_beside_an_input_shapefile_are_not_overwritten() {
+    // Issue 47, O2: `-o s.prj` replaced the input's .prj (a sidecar is input too).
+    let dir = tempdir();
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/gis");
+    for ext in ["shp", "shx", "dbf", "prj", "cpg"] {
+        fs::copy(data.join(format!("sigma_27700.{ext}")), dir.path().join(format!("s.{ext}")))
+            .unwrap();
+    }
+    let prj = fs::read(dir.path().join("s.prj")).unwrap();
+    for out in ["s.prj", "s.dbf", "./s.shx"] {
+        let run = sigdt_in(dir.path(), &["reconstruct", "s.shp", "-o", out], None);
+        run.error(&["belongs with the input Shapefile; refusing to overwrite it"]);
+    }
+    assert_eq!(fs::read(dir.path().join("s.prj")).unwrap(), prj);
+    sigdt_in(dir.path(), &["reconstruct", "s.shp", "-o", "s.wkt"], None).expect(0);
+}
+
+#[test]
 fn failed_run_leaves_existing_output_untouched() {
     let dir = tempdir();
     fs::write(dir.path().join("bad.xy"), "0 0\n1 0\n1 oops\n").unwrap();

@@ -14,6 +14,10 @@ pub struct Crs {
     pub wkt: Option<String>,
 }
 
+/// The largest code a GeoPackage can store (its `srs_id` is a 32-bit signed integer); EPSG
+/// codes stay far below it.
+pub const MAX_CODE: u32 = i32::MAX as u32;
+
 /// The WKT of EPSG:4326, written to GeoPackages (whose definition column may not be empty)
 /// when only the code is known.
 pub const WGS84_WKT: &str = r#"GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563,AUTHORITY["EPSG","7030"]],AUTHORITY["EPSG","6326"]],PRIMEM["Greenwich",0,AUTHORITY["EPSG","8901"]],UNIT["degree",0.0174532925199433,AUTHORITY["EPSG","9122"]],AXIS["Latitude",NORTH],AXIS["Longitude",EAST],AUTHORITY["EPSG","4326"]]"#;
@@ -37,7 +41,8 @@ impl Crs {
             .or_else(|| upper.strip_prefix("URN:OGC:DEF:CRS:EPSG::"))
             .unwrap_or(&upper);
         match code.parse::<u32>() {
-            Ok(code) if code > 0 => Ok(Crs::epsg(code)),
+            // GeoPackage stores codes as 32-bit signed integers.
+            Ok(code) if code > 0 && code <= MAX_CODE => Ok(Crs::epsg(code)),
             _ => Err(format!(
                 "{} is not a coordinate reference system sigdt knows: give EPSG:NNNN (for \
                  example EPSG:4326 for longitude/latitude, EPSG:27700 for the British grid)",
@@ -50,8 +55,54 @@ impl Crs {
     /// for the whole system (the root's last `AUTHORITY["EPSG","N"]` in WKT 1, `ID["EPSG",N]`
     /// in WKT 2), and the definition itself.
     pub fn from_wkt(wkt: &str) -> Crs {
-        let wkt = wkt.trim();
+        // A byte-order mark is no part of the definition (Windows tools write one).
+        let wkt = wkt.trim_start_matches('\u{feff}').trim();
         Crs { epsg: root_epsg(wkt), wkt: (!wkt.is_empty()).then(|| wkt.to_string()) }
+    }
+
+    /// Whether the definition is a WKT coordinate system: a CRS keyword of WKT 1 or 2, then
+    /// brackets (or parentheses) that close at the end. A `.prj` that is not one is refused
+    /// rather than copied into outputs as a definition.
+    pub fn is_wkt_definition(&self) -> bool {
+        const KEYWORDS: [&str; 17] = [
+            "GEOGCS",
+            "PROJCS",
+            "GEOCCS",
+            "COMPD_CS",
+            "VERT_CS",
+            "LOCAL_CS",
+            "GEOGCRS",
+            "GEOGRAPHICCRS",
+            "PROJCRS",
+            "PROJECTEDCRS",
+            "GEODCRS",
+            "GEODETICCRS",
+            "BOUNDCRS",
+            "COMPOUNDCRS",
+            "VERTCRS",
+            "ENGCRS",
+            "ENGINEERINGCRS",
+        ];
+        let Some(wkt) = &self.wkt else { return false };
+        let open = wkt.find(['[', '(']).unwrap_or(wkt.len());
+        let keyword = wkt[..open].trim().to_ascii_uppercase();
+        let mut depth = 0i64;
+        let mut quoted = false;
+        for (k, c) in wkt.char_indices().skip_while(|&(k, _)| k < open) {
+            match c {
+                '"' => quoted = !quoted,
+                '[' | '(' if !quoted => depth += 1,
+                ']' | ')' if !quoted => {
+                    depth -= 1;
+                    if depth == 0 {
+                        return KEYWORDS.contains(&keyword.as_str())
+                            && wkt[k + 1..].trim().is_empty();
+                    }
+                }
+                _ => {}
+            }
+        }
+        false
     }
 
     /// Whether coordinates are longitude and latitude in degrees: `Some(true)` for a
@@ -121,7 +172,8 @@ fn authority_code(clause: &str) -> Option<u32> {
     let mut fields = clause[open + 1..close].split(',').map(|f| f.trim().trim_matches('"'));
     let authority = fields.next()?;
     let code = fields.next()?;
-    authority.eq_ignore_ascii_case("EPSG").then(|| code.parse().ok()).flatten()
+    let code = code.parse().ok().filter(|&c| c > 0 && c <= MAX_CODE);
+    authority.eq_ignore_ascii_case("EPSG").then_some(code).flatten()
 }
 
 #[cfg(test)]
@@ -165,5 +217,38 @@ mod tests {
         for text in ["", "[", "]]]", "\"", "X[\"a\"\"b\",AUTHORITY[\"EPSG\"]]"] {
             assert_eq!(Crs::from_wkt(text).epsg, None, "{text:?}");
         }
+    }
+
+    #[test]
+    fn a_byte_order_mark_does_not_hide_a_geographic_system() {
+        // Issue 47, K4: a .prj starting with a byte-order mark was not read as geographic,
+        // and degrees were reconstructed as a plane.
+        let crs = Crs::from_wkt(&format!("\u{feff}{WGS84_WKT}"));
+        assert_eq!((crs.epsg, crs.is_geographic()), (Some(4326), Some(true)));
+        assert!(crs.is_wkt_definition());
+    }
+
+    #[test]
+    fn codes_past_what_a_geopackage_stores_are_refused() {
+        // Issue 47, K9: EPSG:3000000000 was accepted and written as a negative srs_id.
+        let err = Crs::parse("EPSG:3000000000").unwrap_err();
+        assert!(err.starts_with("'EPSG:3000000000' is not a coordinate reference system"), "{err}");
+        assert_eq!(Crs::parse("EPSG:2147483647"), Ok(Crs::epsg(2_147_483_647)));
+        assert_eq!(Crs::from_wkt("GEOGCS[\"x\",AUTHORITY[\"EPSG\",\"3000000000\"]]").epsg, None);
+    }
+
+    #[test]
+    fn only_wkt_coordinate_systems_are_definitions() {
+        // Issue 47, K7: any text of a .prj was copied into outputs as the definition.
+        assert!(Crs::from_wkt(WGS84_WKT).is_wkt_definition());
+        let wkt2 = r#"PROJCRS["x",BASEGEOGCRS["y",DATUM["z",ELLIPSOID["w",1,0]]],CS[Cartesian,2]]"#;
+        assert!(Crs::from_wkt(wkt2).is_wkt_definition());
+        for text in
+            ["secret=hunter2", "GEOGCS[\"x\"", "GEOGCS[\"x\"] trailing", "FOO[\"x\"]", "", "[]"]
+        {
+            assert!(!Crs::from_wkt(text).is_wkt_definition(), "{text:?}");
+        }
+        // A bracket inside a quoted name does not close the definition.
+        assert!(Crs::from_wkt(r#"GEOGCS["a]b",UNIT["degree",0.0174]]"#).is_wkt_definition());
     }
 }

@@ -129,18 +129,66 @@ fn check_fits(n: usize, size: usize, left: usize) -> Result<(), String> {
     }
 }
 
-/// The system of the `.prj` beside the `.shp` at `path`, if there is one.
+/// The files read beside a Shapefile `path` (`a.shp`, or `a.shp.gz` inside gzip): its
+/// `.prj` in either case (the one input sigdt reads) and the `.shx`, `.dbf` and `.cpg` that
+/// belong with it, so that no output replaces one. Empty for any other file.
+pub fn sidecars(path: &Path) -> Vec<std::path::PathBuf> {
+    let name = path.file_name().map(|n| n.to_string_lossy().to_ascii_lowercase());
+    let base = match name.as_deref() {
+        Some(n) if n.ends_with(".shp") => path.to_path_buf(),
+        Some(n) if n.ends_with(".shp.gz") => path.with_extension(""),
+        _ => return Vec::new(),
+    };
+    let extensions = ["prj", "PRJ", "shx", "SHX", "dbf", "DBF", "cpg", "CPG"];
+    extensions.into_iter().map(|e| base.with_extension(e)).collect()
+}
+
+/// The largest `.prj` read: the longest WKT definitions in the EPSG registry are a few
+/// kilobytes.
+pub const MAX_PRJ_BYTES: u64 = 64 << 10;
+
+/// The system of the `.prj` beside the `.shp` at `path`, if there is one. Its text goes into
+/// every GIS output as the system's definition, so it is refused when it is not a WKT
+/// coordinate system, larger than [`MAX_PRJ_BYTES`], or a symbolic link out of its folder.
 pub fn projection(path: &Path) -> Result<Option<Crs>> {
     let prj = path.with_extension("prj");
     let upper = path.with_extension("PRJ");
     let Some(found) = [prj, upper].into_iter().find(|p| p.is_file()) else {
         return Ok(None);
     };
-    let mut text = String::new();
+    let shown = found.display();
+    // The folder of a bare file name (`s.prj`) is the current one.
+    let folder = |p: &Path| {
+        let dir = p.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        std::fs::canonicalize(dir).ok()
+    };
+    let target = std::fs::canonicalize(&found).map_err(|e| anyhow!("{shown}: cannot read: {e}"))?;
+    if folder(&target) != folder(&found) {
+        bail!(
+            "{shown}: a link to '{}', outside the Shapefile's folder: refused (copy the \
+             definition beside it)",
+            target.display()
+        );
+    }
+    let mut bytes = Vec::new();
     std::fs::File::open(&found)
-        .and_then(|f| f.take(1 << 20).read_to_string(&mut text))
-        .map_err(|e| anyhow!("{}: cannot read: {e}", found.display()))?;
-    Ok(Some(Crs::from_wkt(&text)).filter(|c| c.wkt.is_some()))
+        .and_then(|f| f.take(MAX_PRJ_BYTES + 1).read_to_end(&mut bytes))
+        .map_err(|e| anyhow!("{shown}: cannot read: {e}"))?;
+    if bytes.len() as u64 > MAX_PRJ_BYTES {
+        bail!("{shown}: larger than {MAX_PRJ_BYTES} bytes, which no coordinate system needs");
+    }
+    let text = String::from_utf8_lossy(&bytes);
+    let crs = Crs::from_wkt(&text);
+    if crs.wkt.is_none() {
+        return Ok(None);
+    }
+    if !crs.is_wkt_definition() {
+        bail!(
+            "{shown}: not a coordinate system definition (WKT such as PROJCS[...] or \
+             GEOGCS[...]): correct or remove it"
+        );
+    }
+    Ok(Some(crs))
 }
 
 #[cfg(test)]
@@ -223,5 +271,41 @@ mod tests {
         let many: Vec<_> = (0..11).map(|k| point(k as f64, 0.0)).collect();
         let err = read(&shp(&many)[..], "t.shp", 10).unwrap_err().to_string();
         assert!(err.contains("record 11: more than 10 points"), "{err}");
+    }
+
+    #[test]
+    fn a_prj_that_is_no_coordinate_system_or_lies_elsewhere_is_refused() {
+        // Issue 47, K7: a .prj was followed through symbolic links, and any text up to
+        // 1 MiB went into the outputs as the system's definition.
+        let dir = tempfile::tempdir().unwrap();
+        let shp_path = dir.path().join("a.shp");
+        let prj = dir.path().join("a.prj");
+        std::fs::write(&prj, "password=hunter2\n").unwrap();
+        let err = projection(&shp_path).unwrap_err().to_string();
+        assert!(err.ends_with("not a coordinate system definition (WKT such as PROJCS[...] or GEOGCS[...]): correct or remove it"), "{err}");
+        std::fs::write(&prj, format!("GEOGCS[\"{}\"]", "x".repeat(70_000))).unwrap();
+        let err = projection(&shp_path).unwrap_err().to_string();
+        assert!(err.contains("larger than 65536 bytes"), "{err}");
+        std::fs::write(&prj, format!("\u{feff}{}", super::super::crs::WGS84_WKT)).unwrap();
+        assert_eq!(projection(&shp_path).unwrap().and_then(|c| c.epsg), Some(4326));
+        #[cfg(unix)]
+        links(&dir, &prj, &shp_path);
+    }
+
+    /// A link to a file in another folder is refused; one beside it is read.
+    #[cfg(unix)]
+    fn links(dir: &tempfile::TempDir, prj: &Path, shp_path: &Path) {
+        let elsewhere = tempfile::tempdir().unwrap();
+        let secret = elsewhere.path().join("secret.prj");
+        std::fs::write(&secret, super::super::crs::WGS84_WKT).unwrap();
+        std::fs::remove_file(prj).unwrap();
+        std::os::unix::fs::symlink(&secret, prj).unwrap();
+        let err = projection(shp_path).unwrap_err().to_string();
+        assert!(err.contains("outside the Shapefile's folder"), "{err}");
+        std::fs::remove_file(prj).unwrap();
+        let beside = dir.path().join("b.prj");
+        std::fs::write(&beside, super::super::crs::WGS84_WKT).unwrap();
+        std::os::unix::fs::symlink(&beside, prj).unwrap();
+        assert_eq!(projection(shp_path).unwrap().and_then(|c| c.epsg), Some(4326));
     }
 }

@@ -86,13 +86,15 @@ pub fn points(reader: impl Read, name: &str, how: Reading<'_>) -> Result<Points>
         if head.starts_with(gzip::MAGIC) {
             bail!("{name}: gzip inside gzip: decompress it once (gunzip), then read what remains");
         }
-        // Nothing inside gzip is read in place.
+        // Nothing inside gzip is read in place; a Shapefile's `.prj` lies beside the file
+        // without `.gz` (`a.shp.gz`: `a.prj`).
+        let beside = how.path.map(|path| path.with_extension(""));
         let how = Reading { path: None, ..how };
-        let mut read = uncompressed(unzipped, name, inner, how)?;
+        let mut read = uncompressed(unzipped, name, inner, how, beside.as_deref())?;
         read.how = format!("{} (gzip)", read.how);
         return Ok(read);
     }
-    uncompressed(reader, name, name, how)
+    uncompressed(reader, name, name, how, how.path)
 }
 
 /// The formats of [`uncompressed`], found before reading.
@@ -110,12 +112,14 @@ enum Format {
 }
 
 /// [`points`] of an uncompressed stream; `shown` names it in errors, `inner` (the name
-/// without `.gz`) gives the extension.
+/// without `.gz`) gives the extension, and a Shapefile's `.prj` is looked for beside
+/// `beside`.
 fn uncompressed<R: BufRead>(
     mut reader: R,
     shown: &str,
     inner: &str,
     how: Reading<'_>,
+    beside: Option<&Path>,
 ) -> Result<Points> {
     let head = reader.fill_buf().with_context(|| format!("{shown}: cannot read"))?;
     let format = detect(head, inner);
@@ -172,7 +176,7 @@ fn uncompressed<R: BufRead>(
         }
         Format::Shapefile => {
             let points = shp::read(reader, shown, max)?;
-            let crs = match how.path {
+            let crs = match beside {
                 Some(path) => shp::projection(path)?,
                 None => None,
             };
@@ -326,5 +330,22 @@ mod tests {
         assert_eq!(first_content("\u{feff}\n  # c\n\n {\"a\": 1}\n".as_bytes()), "{\"a\": 1}");
         assert_eq!(first_content(b""), "");
         assert_eq!(first_content(&[b'x', 0xe2, 0x82]), "x");
+    }
+
+    #[test]
+    fn a_gzipped_shapefile_finds_its_prj_beside_it() {
+        // Issue 47, K5: `a.shp.gz` did not find `a.prj`, and `-v` said there was none.
+        use std::io::Write;
+        let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/gis");
+        let dir = tempfile::tempdir().unwrap();
+        let shp = std::fs::read(data.join("sigma_27700.shp")).unwrap();
+        let mut gz = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+        gz.write_all(&shp).unwrap();
+        std::fs::write(dir.path().join("a.shp.gz"), gz.finish().unwrap()).unwrap();
+        std::fs::copy(data.join("sigma_27700.prj"), dir.path().join("a.prj")).unwrap();
+        let path = dir.path().join("a.shp.gz");
+        let read = crate::read_file(&path, &crate::ReadOptions::at_most(1000)).unwrap();
+        assert!(read.crs.is_some_and(|c| c.wkt.is_some()), "{}", read.how);
+        assert_eq!(read.how, "a Shapefile (its .prj read) (gzip)");
     }
 }
