@@ -173,8 +173,23 @@ fn with_given_crs(mut read: Points, name: &str, given: Option<&Crs>) -> anyhow::
             );
         }
         (None, Some(given)) => read.crs = Some(given.clone()),
-        // A definition without a code (an ESRI .prj): the given system names it.
+        // A definition without a code (an ESRI .prj): the given system names it, unless one
+        // is geographic and the other projected.
         (Some(declared), Some(given)) if declared.epsg.is_none() => {
+            let kind = |geographic: Option<bool>| match geographic {
+                Some(true) => "longitude/latitude",
+                Some(false) => "a projected system",
+                None => "unknown",
+            };
+            let (theirs, ours) = (declared.is_geographic(), given.is_geographic());
+            if theirs.is_some() && ours.is_some() && theirs != ours {
+                anyhow::bail!(
+                    "{name} declares {}, but --crs says {given}, which is {}: sigdt does not \
+                     transform coordinates (give the file's own code, or drop --crs)",
+                    kind(theirs),
+                    kind(ours)
+                );
+            }
             read.crs = Some(Crs { epsg: given.epsg, wkt: declared.wkt.clone() });
         }
         _ => {}
@@ -216,4 +231,22 @@ pub fn read_points_bytes(
 /// `columns` as `--columns` spells them.
 fn parse_columns(columns: Option<&str>) -> Result<Option<Columns>, Error> {
     columns.map(|text| text.parse().map_err(|m| Error::Usage(format!("columns: {m}")))).transpose()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_projected_prj_is_not_named_longitude_latitude() {
+        // Issue 47, K3: a projected .prj with --crs EPSG:4326 was accepted, and metres went
+        // out as RFC 7946 GeoJSON labelled WGS 84.
+        let shp = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/gis/sigma_27700.shp");
+        let given =
+            |code| ReadOptions { crs: Some(Crs::epsg(code)), ..ReadOptions::at_most(10_000) };
+        let err = read_file(&shp, &given(4326)).unwrap_err().to_string();
+        assert!(err.contains("declares a projected system, but --crs says EPSG:4326"), "{err}");
+        let read = read_file(&shp, &given(27700)).unwrap();
+        assert_eq!(read.crs.map(|c| (c.epsg, c.wkt.is_some())), Some((Some(27700), true)));
+    }
 }

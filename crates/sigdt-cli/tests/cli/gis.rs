@@ -214,3 +214,32 @@ fn commands_in_the_plane_warn_about_degrees() {
     // Metres: nothing to say.
     sigdt(&["graph", arg(&gis("sigma_27700.gpkg")), "--kind", "sigdt"]).ok();
 }
+
+#[test]
+fn sigdts_own_geopackage_reads_back_by_its_layers_not_the_empty_one() {
+    // Issue 47, K8: the output read back took the empty `left_out` layer: 0 points, exit 0.
+    let dir = tempdir();
+    let square = write_points(dir.path(), "square.xy", &circle(24, 10.0));
+    sigdt_in(dir.path(), &["reconstruct", arg(&square), "-o", "o.gpkg"], None).ok();
+    sigdt_in(dir.path(), &["reconstruct", "o.gpkg"], None)
+        .error(&["its only point layer, 'left_out', is empty; choose one of its 2 feature layers"]);
+    let run = sigdt_in(dir.path(), &["reconstruct", "o.gpkg", "--layer", "curves", "-v"], None);
+    assert!(run.expect(0).stderr.contains("layer 'curves'"), "{run}");
+}
+
+#[test]
+fn a_layer_whose_system_has_no_row_says_so() {
+    // Issue 47, K10: a layer whose srs_id has no row in gpkg_spatial_ref_sys silently had
+    // no coordinate system.
+    let dir = tempdir();
+    let copy = dir.path().join("s.gpkg");
+    fs::copy(gis("sigma_27700.gpkg"), &copy).unwrap();
+    let db = rusqlite::Connection::open(&copy).unwrap();
+    // As a careless tool writes it: the foreign key that forbids it is not enforced.
+    db.execute_batch("PRAGMA foreign_keys = OFF").unwrap();
+    let rewrite = "UPDATE gpkg_geometry_columns SET srs_id = 99999 WHERE srs_id = 27700";
+    assert_eq!(db.execute(rewrite, []).unwrap(), 1);
+    drop(db);
+    sigdt(&["reconstruct", arg(&copy)])
+        .error(&["its srs_id 99999 has no row in gpkg_spatial_ref_sys"]);
+}

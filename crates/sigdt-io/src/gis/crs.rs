@@ -28,18 +28,31 @@ impl Crs {
         Crs { epsg: Some(code), wkt: None }
     }
 
-    /// `--crs`: `EPSG:NNNN` (any case), `OGC:CRS84` or `CRS84`; a bare number is an EPSG
-    /// code.
+    /// `--crs` and GeoJSON's legacy `crs` name: `EPSG:NNNN` (any case), `OGC:CRS84` or
+    /// `CRS84`, a bare number (an EPSG code), and the OGC names of those: URNs
+    /// (`urn:ogc:def:crs:EPSG::27700`, with or without a version such as `6.6`) and http
+    /// URIs (`http://www.opengis.net/def/crs/EPSG/0/27700`).
     pub fn parse(text: &str) -> Result<Crs, String> {
         let text = text.trim();
         let upper = text.to_ascii_uppercase();
-        if matches!(upper.as_str(), "OGC:CRS84" | "CRS84" | "URN:OGC:DEF:CRS:OGC:1.3:CRS84") {
+        // OGC's two spellings of authority, version and code, as `AUTHORITY:CODE`.
+        let urn = upper.strip_prefix("URN:OGC:DEF:CRS:").and_then(|rest| {
+            let (authority, rest) = rest.split_once(':')?;
+            let (_version, code) = rest.rsplit_once(':')?;
+            Some(format!("{authority}:{code}"))
+        });
+        let uri = ["HTTP://WWW.OPENGIS.NET/DEF/CRS/", "HTTPS://WWW.OPENGIS.NET/DEF/CRS/"]
+            .iter()
+            .find_map(|prefix| upper.strip_prefix(prefix))
+            .and_then(|rest| match rest.split('/').collect::<Vec<_>>()[..] {
+                [authority, _version, code] => Some(format!("{authority}:{code}")),
+                _ => None,
+            });
+        let upper = urn.or(uri).unwrap_or(upper);
+        if matches!(upper.as_str(), "OGC:CRS84" | "CRS84") {
             return Ok(Crs::epsg(4326));
         }
-        let code = upper
-            .strip_prefix("EPSG:")
-            .or_else(|| upper.strip_prefix("URN:OGC:DEF:CRS:EPSG::"))
-            .unwrap_or(&upper);
+        let code = upper.strip_prefix("EPSG:").unwrap_or(&upper);
         match code.parse::<u32>() {
             // GeoPackage stores codes as 32-bit signed integers.
             Ok(code) if code > 0 && code <= MAX_CODE => Ok(Crs::epsg(code)),
@@ -250,5 +263,26 @@ mod tests {
         }
         // A bracket inside a quoted name does not close the definition.
         assert!(Crs::from_wkt(r#"GEOGCS["a]b",UNIT["degree",0.0174]]"#).is_wkt_definition());
+    }
+
+    #[test]
+    fn every_ogc_spelling_of_a_code_is_read() {
+        // Issue 47, K1: a versioned URN or an OGC http URI was dropped silently.
+        for text in [
+            "urn:ogc:def:crs:EPSG:6.6:27700",
+            "urn:ogc:def:crs:EPSG::27700",
+            "http://www.opengis.net/def/crs/EPSG/0/27700",
+            "https://www.opengis.net/def/crs/EPSG/9.9.1/27700",
+        ] {
+            assert_eq!(Crs::parse(text), Ok(Crs::epsg(27700)), "{text}");
+        }
+        for text in
+            ["urn:ogc:def:crs:OGC:1.3:CRS84", "http://www.opengis.net/def/crs/OGC/1.3/CRS84"]
+        {
+            assert_eq!(Crs::parse(text), Ok(Crs::epsg(4326)), "{text}");
+        }
+        for text in ["urn:ogc:def:crs:ESRI::102100", "http://www.opengis.net/def/crs/EPSG/27700"] {
+            assert!(Crs::parse(text).is_err(), "{text}");
+        }
     }
 }

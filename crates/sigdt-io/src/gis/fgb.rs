@@ -81,9 +81,15 @@ pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<FgbPoints> 
             Err(Framing::End) => {
                 let declared = header.features_count();
                 let read = number - 1;
-                if declared != 0 && declared != read {
+                if declared != 0 && declared > read {
                     bail!(
                         "{name}: FlatGeobuf: the file ends after {read} of its {declared} features"
+                    );
+                }
+                if declared != 0 && declared < read {
+                    bail!(
+                        "{name}: FlatGeobuf: {read} features, more than the {declared} its \
+                         header declares"
                     );
                 }
                 break;
@@ -304,5 +310,39 @@ impl GeozeroGeometry for LeftOutPoint {
         p.point_begin(0)?;
         p.xy(self.0[0], self.0[1], 0)?;
         p.point_end(0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use sigdt::{Method, Options};
+
+    /// A FlatGeobuf file of the outline of a square and, after it, its last feature again.
+    fn one_feature_too_many() -> Vec<u8> {
+        let points = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let rec = sigdt::reconstruct(&points, &Options::default()).unwrap();
+        let mut bytes = write(&Layers::new(Method::SigAuto, &points, &rec), None).unwrap();
+        let prefix = |at: usize| u32::from_le_bytes(bytes[at..at + 4].try_into().unwrap()) as usize;
+        // The magic bytes, the size-prefixed header, then size-prefixed features (no index).
+        let mut at = 8 + 4 + prefix(8);
+        let mut last = at;
+        while at < bytes.len() {
+            last = at;
+            at += 4 + prefix(at);
+        }
+        let copy = bytes[last..].to_vec();
+        bytes.extend(copy);
+        bytes
+    }
+
+    #[test]
+    fn more_features_than_the_header_declares_is_said_the_right_way_round() {
+        // Issue 47, B3: the message said the file ended after 2 of its 1 features.
+        let bytes = one_feature_too_many();
+        let Err(err) = read(&bytes[..], "a.fgb", 100) else { panic!("read") };
+        let err = err.to_string();
+        assert!(err.contains("features, more than the"), "{err}");
+        assert!(err.contains("its header declares"), "{err}");
     }
 }

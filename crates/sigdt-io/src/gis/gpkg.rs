@@ -50,10 +50,23 @@ pub fn read(path: &Path, name: &str, layer: Option<&str>, max: usize) -> Result<
         })?,
         None => {
             let points: Vec<_> = layers.iter().filter(|l| l.is_points()).collect();
+            // An empty point layer beside others (sigdt's own `left_out` when nothing was left
+            // out) is not what the user means to read.
+            let has_rows = |l: &Layer| -> rusqlite::Result<bool> {
+                let query = format!("SELECT EXISTS (SELECT 1 FROM {})", identifier(&l.table));
+                db.query_row(&query, [], |row| row.get(0))
+            };
             match (layers.as_slice(), points.as_slice()) {
                 ([], _) => bail!("{name}: a GeoPackage without feature layers"),
                 ([only], _) => only,
-                (_, [only]) => *only,
+                (_, [only]) if has_rows(only).map_err(sql_error)? => *only,
+                (_, [only]) => bail!(
+                    "{name}: its only point layer, {}, is empty; choose one of its {} feature \
+                     layers ({}) with --layer NAME",
+                    quoted(&only.table),
+                    layers.len(),
+                    names()
+                ),
                 _ => bail!(
                     "{name}: a GeoPackage of {} feature layers ({}): choose one with --layer NAME",
                     layers.len(),
@@ -62,7 +75,15 @@ pub fn read(path: &Path, name: &str, layer: Option<&str>, max: usize) -> Result<
             }
         }
     };
-    let crs = system(&db, chosen.srs_id).map_err(sql_error)?;
+    let crs = match system(&db, chosen.srs_id) {
+        Err(rusqlite::Error::QueryReturnedNoRows) => bail!(
+            "{name}: layer {}: its srs_id {} has no row in gpkg_spatial_ref_sys, so its \
+             coordinate system is unknown (add the row, or write the layer again with its system)",
+            quoted(&chosen.table),
+            chosen.srs_id
+        ),
+        found => found.map_err(sql_error)?,
+    };
     let query = format!(
         "SELECT {}, {} FROM {}",
         identifier("rowid"),
@@ -115,7 +136,8 @@ fn feature_layers(db: &Connection) -> rusqlite::Result<Vec<Layer>> {
     layers.collect()
 }
 
-/// The system of `srs_id`: none for the undefined ones (-1, 0).
+/// The system of `srs_id`: none for the undefined ones (-1, 0); `QueryReturnedNoRows` when
+/// `gpkg_spatial_ref_sys` has no row for it.
 fn system(db: &Connection, srs_id: i64) -> rusqlite::Result<Option<Crs>> {
     if srs_id <= 0 {
         return Ok(None);
@@ -128,7 +150,10 @@ fn system(db: &Connection, srs_id: i64) -> rusqlite::Result<Option<Crs>> {
             |row| Ok((row.get(0)?, row.get(1)?, row.get(2)?)),
         )
         .optional()?;
-    Ok(row.map(|(organization, code, definition)| {
+    let Some(row) = row else {
+        return Err(rusqlite::Error::QueryReturnedNoRows);
+    };
+    Ok(Some(row).map(|(organization, code, definition)| {
         let mut crs = match definition.trim() {
             "" | "undefined" => Crs { epsg: None, wkt: None },
             wkt => Crs::from_wkt(wkt),

@@ -190,8 +190,20 @@ fn uncompressed<R: BufRead>(
         Format::Wkt => done(wkt::read(reader, shown, max)?, "WKT"),
         Format::GeoJson => {
             let (points, crs) = geojson::read_with_crs(reader, shown, max)?;
-            // A name sigdt does not know is no system: --crs may give one.
-            let crs = crs.and_then(|name| Crs::parse(&name).ok());
+            // A name sigdt cannot read is an error: dropped, the points would be written
+            // out in a system they are not in.
+            let crs = crs
+                .map(|name| {
+                    Crs::parse(&name).map_err(|_| {
+                        anyhow::anyhow!(
+                            "{shown}: GeoJSON: the \"crs\" member names {}, a coordinate system \
+                             sigdt cannot read (it reads EPSG codes and CRS84, as names, OGC URNs \
+                             or http URIs): write it as urn:ogc:def:crs:EPSG::NNNN",
+                            sigdt::io::quoted(&name)
+                        )
+                    })
+                })
+                .transpose()?;
             Points { points, how: "GeoJSON".into(), crs, lon_lat: false }
         }
         Format::Table => {
@@ -347,5 +359,23 @@ mod tests {
         let read = crate::read_file(&path, &crate::ReadOptions::at_most(1000)).unwrap();
         assert!(read.crs.is_some_and(|c| c.wkt.is_some()), "{}", read.how);
         assert_eq!(read.how, "a Shapefile (its .prj read) (gzip)");
+    }
+
+    #[test]
+    fn a_geojson_crs_that_cannot_be_read_is_an_error_not_dropped() {
+        // Issue 47, K1: British-grid metres named by a versioned URN went out as RFC 7946.
+        let named = |name: &str| {
+            format!(
+                r#"{{"type": "MultiPoint", "crs": {{"type": "name", "properties": {{"name": "{name}"}}}}, "coordinates": [[0, 0], [1, 0], [1, 1]]}}"#
+            )
+        };
+        let read = |text: String| points(text.as_bytes(), "a.geojson", Reading::at_most(10));
+        let crs = read(named("urn:ogc:def:crs:EPSG:6.6:27700")).unwrap().crs;
+        assert_eq!(crs.and_then(|c| c.epsg), Some(27700));
+        let err = read(named("ESRI:102100")).unwrap_err().to_string();
+        assert!(
+            err.starts_with("a.geojson: GeoJSON: the \"crs\" member names 'ESRI:102100'"),
+            "{err}"
+        );
     }
 }
