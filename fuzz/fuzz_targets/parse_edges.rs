@@ -3,7 +3,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use sigdt::io::{parse_edges, parse_edges_of};
+use sigdt_io::text::{parse_edges, parse_edges_of};
 use std::io::BufReader;
 
 fuzz_target!(|data: &[u8]| {

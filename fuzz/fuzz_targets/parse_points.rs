@@ -4,7 +4,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use sigdt::io::{parse_points, PointFormat};
+use sigdt_io::text::{parse_points, PointFormat};
 use std::io::BufReader;
 
 fuzz_target!(|data: &[u8]| {

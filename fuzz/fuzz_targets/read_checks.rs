@@ -5,7 +5,7 @@
 //! - `Ok`: at most `max_points` points, every coordinate finite.
 //! - `Err`: the message, as the command line and the Python package show it, is one line
 //!   (no `'\n'`), names the file (`name` appears in it), holds no control character (input is
-//!   echoed through `sigdt::io::quoted`, which escapes them), and is at most [`MAX_MESSAGE`]
+//!   echoed through `sigdt_io::text::quoted`, which escapes them), and is at most [`MAX_MESSAGE`]
 //!   characters long, not counting the JSON path of a GeoJSON message (see [`json_path`]).
 //!
 //! With the environment variable `SIGDT_FUZZ_KNOWN` set (to anything), a message that holds
@@ -23,7 +23,7 @@ pub const MAX_POINTS: usize = 100;
 
 /// The longest message allowed, in characters. A message quotes at most two pieces of input
 /// (a header name and a field of a table; one token elsewhere), each through
-/// `sigdt::io::quoted`, which shows at most 40 characters, each escaped to at most 8
+/// `sigdt_io::text::quoted`, which shows at most 40 characters, each escaped to at most 8
 /// (`\u{3000}`; control characters, at most `\u{9f}`, take 6), plus its quotes and
 /// `...' (N characters)`: at most 2 + 320 + 30 = 352 characters a piece. Two pieces, the
 /// file name, a line number and the fixed text (under 200 characters) stay under 1000.

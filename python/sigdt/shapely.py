@@ -126,7 +126,7 @@ def from_shapely(geometry: object) -> Coordinates:
 
 
 def _text(rec: Reconstruction, fmt: str) -> str:
-    """The result in ``fmt`` by the CLI's writer (``sigdt::io::write_reconstruction``)."""
+    """The result in ``fmt`` by the CLI's writer (``sigdt_io::text::write_reconstruction``)."""
     from . import _core
 
     points = np.require(np.asarray(rec.points).reshape(-1, 2), np.float64, ["C", "A"])
@@ -139,7 +139,7 @@ def to_geojson(rec: Reconstruction) -> GeoJsonFeature:
     the result warns, and the sampling check's findings.
 
     It is what ``sigdt reconstruct --format geojson`` writes for the same result, read with
-    :func:`json.loads`: one writer makes both (``sigdt::io::write_reconstruction``). The
+    :func:`json.loads`: one writer makes both (``sigdt_io::text::write_reconstruction``). The
     properties are ``status``, ``points`` (the input's count), ``vertices`` (only when the
     method moved the points or placed its own: the count of the positions the geometry
     uses), ``edges``, ``loops``, ``paths``, ``duplicates``, ``left_out`` and

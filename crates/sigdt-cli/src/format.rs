@@ -6,8 +6,8 @@ use std::io::{self, Write};
 use std::path::Path;
 use std::str::FromStr;
 
-use sigdt::io::{OutputFormat as Text, WriteOptions};
 use sigdt::{Method, Point, Reconstruction};
+use sigdt_io::text::{OutputFormat as Text, WriteOptions};
 
 use sigdt_io::gis::{fgb, gpkg, layers::Layers as GisLayers, Crs};
 use sigdt_lab::render::{render_svg, Layers, RenderOptions};
@@ -17,7 +17,7 @@ use sigdt_lab::render::{render_svg, Layers, RenderOptions};
 /// [`FromStr`] and [`Display`](fmt::Display) map between the two.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum OutputFormat {
-    /// A text format of the kernel ([`sigdt::io::OutputFormat`]).
+    /// A text format of the kernel ([`sigdt_io::text::OutputFormat`]).
     Text(Text),
     /// A standalone SVG picture of the points, edges and filled loops, with a legend.
     Svg,
@@ -92,7 +92,7 @@ impl OutputFormat {
             OutputFormat::Text(text) => {
                 let legacy_crs = context.legacy_crs.map(|c| format!("urn:ogc:def:crs:EPSG::{c}"));
                 let options = WriteOptions { method: Some(context.method), legacy_crs };
-                sigdt::io::write_reconstruction_with(w, text, points, rec, &options)
+                sigdt_io::text::write_reconstruction_with(w, text, points, rec, &options)
             }
             OutputFormat::Svg => w.write_all(picture(points, rec).as_bytes()),
             OutputFormat::Png => {

@@ -90,7 +90,7 @@ pub fn ground_truth(path: Option<&Path>, n: usize) -> Result<Option<Vec<Edge>>> 
 /// whole). An index past the points is bad data in that file (exit status 1), named with the
 /// flag, the file and the line.
 pub fn edges_of(path: &Path, n: usize, flag: &str) -> Result<Vec<Edge>> {
-    sigdt::io::read_edges_of(path, n).map_err(|err| match &err {
+    sigdt_io::text::read_edges_of(path, n).map_err(|err| match &err {
         sigdt::Error::Parse { message, .. } if is_index_past_the_points(message) => {
             anyhow::anyhow!("{flag} {err}: it is not a graph on the {n} input points")
         }
@@ -98,7 +98,7 @@ pub fn edges_of(path: &Path, n: usize, flag: &str) -> Result<Vec<Edge>> {
     })
 }
 
-/// Whether a parse message of [`sigdt::io::read_edges_of`] is about an index past the points.
+/// Whether a parse message of [`sigdt_io::text::read_edges_of`] is about an index past the points.
 fn is_index_past_the_points(message: &str) -> bool {
     message.starts_with("edge ") && message.contains(" refers to point ")
 }

@@ -98,13 +98,13 @@ pub fn write_labelled(out: &Path, labelled: &Labelled, source: &Path) -> Result<
         None => None,
     };
     points.write(|w| w.write_all(points_text(&labelled.points).as_bytes()))?;
-    gt.write(|w| sigdt::io::write_edges(w, &labelled.gt))?;
+    gt.write(|w| sigdt_io::text::write_edges(w, &labelled.gt))?;
     if let Some((output, truth)) = truth {
         output.write(|w| w.write_all(points_text(truth).as_bytes()))?;
     }
     if let Some((points, edges, curve)) = curve {
         points.write(|w| w.write_all(points_text(&curve.points).as_bytes()))?;
-        edges.write(|w| sigdt::io::write_edges(w, &curve.edges))?;
+        edges.write(|w| sigdt_io::text::write_edges(w, &curve.edges))?;
     }
     Ok(())
 }

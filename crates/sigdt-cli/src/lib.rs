@@ -110,7 +110,7 @@ fn thread_count(flag: Option<usize>, variable: Option<OsString>) -> anyhow::Resu
                     message: format!(
                         "RAYON_NUM_THREADS={}: not a thread count (a whole number; 0 or unset \
                          for every core)",
-                        sigdt::io::quoted(&value.to_string_lossy())
+                        sigdt_io::text::quoted(&value.to_string_lossy())
                     ),
                 }
                 .into())

@@ -1,9 +1,11 @@
 //! Reading points and writing outlines the way GIS users hold them, for any Rust program:
 //! the readers and writers of the `sigdt` command line and Python package.
 //!
-//! - [`read`]: plain `x y` files and `.gtn` (through [`sigdt::io`]), CSV and other tables
-//!   with chosen columns, WKT, GeoJSON, NumPy `.npy`, each also gzip-compressed, and the GIS
-//!   formats of [`gis`]; the format is found from the bytes and the name.
+//! - [`text`]: sigdt's own text formats: plain `x y` point files and `.gtn` read line by
+//!   line, edge lists, and results written as edges, loops, WKT and GeoJSON.
+//! - [`read`]: any point file, its format found from the bytes and the name: those of
+//!   [`text`], CSV and other tables with chosen columns, WKT, GeoJSON, NumPy `.npy`, each
+//!   also gzip-compressed, and the GIS formats of [`gis`].
 //! - [`gis`]: GeoPackage, FlatGeobuf and Shapefile points in, GeoPackage and FlatGeobuf
 //!   layers out, the coordinate system carried from one to the other, and longitude and
 //!   latitude reconstructed in a local plane ([`reconstruct_in_plane`]).
@@ -29,6 +31,7 @@
 pub mod gis;
 pub mod read;
 mod stream;
+pub mod text;
 
 use std::fmt;
 use std::io::Read;

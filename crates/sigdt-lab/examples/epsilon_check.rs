@@ -112,8 +112,8 @@ fn log_correlation(pairs: &[(f64, f64)]) -> f64 {
 }
 
 fn time_metrics(dir: &std::path::Path, name: &str) -> Result<(), Box<dyn std::error::Error>> {
-    let points = sigdt::io::read_points(&dir.join(format!("{name}.xy")))?;
-    let gt = sigdt::io::read_edges(&dir.join(format!("{name}.gt")))?;
+    let points = sigdt_io::text::read_points(&dir.join(format!("{name}.xy")))?;
+    let gt = sigdt_io::text::read_edges(&dir.join(format!("{name}.gt")))?;
     let options = sigdt::Options { method: sigdt::Method::SigConnect2d, ..Default::default() };
     let rec = sigdt::reconstruct(&points, &options)?;
     let t = Instant::now();

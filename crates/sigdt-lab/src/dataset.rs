@@ -80,11 +80,11 @@ pub fn read_index(dir: &Path) -> Result<Vec<Case>> {
         let control = |text: &str| text.chars().any(char::is_control);
         if name.is_empty() || name.contains(['/', '\\']) || name.starts_with('.') || control(&name)
         {
-            let shown = sigdt::io::quoted(&name);
+            let shown = sigdt_io::text::quoted(&name);
             return Err(error(line, format!("{shown} is not a case name (a file stem)")));
         }
         if control(&fields[category_col]) {
-            let shown = sigdt::io::quoted(&fields[category_col]);
+            let shown = sigdt_io::text::quoted(&fields[category_col]);
             return Err(error(line, format!("{shown} is not a category (a control character)")));
         }
         if !seen.insert(name.clone()) {
@@ -126,12 +126,12 @@ impl Case {
     /// case in `dir`.
     ///
     /// # Errors
-    /// As [`sigdt::io::read_points`] and [`sigdt::io::read_edges`]; an edge index past the
+    /// As [`sigdt_io::text::read_points`] and [`sigdt_io::text::read_edges`]; an edge index past the
     /// points is [`Error::Parse`] naming the ground-truth file.
     pub fn read(&self, dir: &Path) -> Result<(Vec<Point>, Vec<Edge>)> {
         let files = self.files(dir);
-        let points = sigdt::io::read_points(&files.points)?;
-        let mut gt: Vec<Edge> = sigdt::io::read_edges(&files.gt)?
+        let points = sigdt_io::text::read_points(&files.points)?;
+        let mut gt: Vec<Edge> = sigdt_io::text::read_edges(&files.gt)?
             .into_iter()
             .map(|[i, j]| [i.min(j), i.max(j)])
             .collect();

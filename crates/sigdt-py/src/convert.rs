@@ -279,7 +279,7 @@ fn finding_from(finding: &Bound<'_, PyAny>) -> PyResult<Finding> {
 
 /// The core's result of a dict made by [`reconstruction`] from `n` points (as
 /// `python/sigdt/_result.py` keeps it, maybe pickled and back): everything the writers of
-/// `sigdt::io` read (not `stats`). Every index is checked against the points or vertices
+/// `sigdt_io::text` read (not `stats`). Every index is checked against the points or vertices
 /// it refers to; an unknown name or a missing key raises.
 pub fn reconstruction_from(fields: &Bound<'_, PyDict>, n: usize) -> PyResult<Reconstruction> {
     let positions = item(fields, "positions")?;

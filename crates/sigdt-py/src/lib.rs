@@ -211,7 +211,7 @@ fn polygons(
 
 /// `write_reconstruction(points, fields, format) -> str`: the result of `reconstruct` (the
 /// dict `fields`, from `points`) as text in `format` (`wkt`, `geojson`, `loops`, `edges`), by
-/// the writer of `sigdt reconstruct --format` (`sigdt::io::write_reconstruction`), so that
+/// the writer of `sigdt reconstruct --format` (`sigdt_io::text::write_reconstruction`), so that
 /// `to_wkt` and `to_geojson` write what the CLI writes.
 #[pyfunction]
 fn write_reconstruction(
@@ -220,7 +220,7 @@ fn write_reconstruction(
     fields: &Bound<'_, PyDict>,
     format: &str,
 ) -> PyResult<String> {
-    let format: sigdt::io::OutputFormat = format.parse().map_err(err)?;
+    let format: sigdt_io::text::OutputFormat = format.parse().map_err(err)?;
     let pts = convert::points(&points)?;
     let rec = convert::reconstruction_from(fields, pts.len())?;
     // Results pickled before the method was recorded have none.
@@ -228,10 +228,11 @@ fn write_reconstruction(
         Some(name) => Some(name.extract::<String>()?.parse::<Method>().map_err(err)?),
         None => None,
     };
-    let options = sigdt::io::WriteOptions { method, legacy_crs: None };
+    let options = sigdt_io::text::WriteOptions { method, legacy_crs: None };
     let write = || {
         let mut out = Vec::new();
-        sigdt::io::write_reconstruction_with(&mut out, format, &pts, &rec, &options).map(|()| out)
+        sigdt_io::text::write_reconstruction_with(&mut out, format, &pts, &rec, &options)
+            .map(|()| out)
     };
     let out = py
         .detach(|| guarded(|| Ok(write())))

@@ -14,10 +14,10 @@
 //! ```
 //!
 //! Everything a user calls is re-exported here; the modules below document the algorithms
-//! (with their papers, guarantees and complexity) and hold the readers, writers and
-//! samplers. The main path runs one way: points → [`delaunay`] → [`proximity`] (SIGDT) →
-//! [`connect`] (inflate, sculpt, loops) → [`result`] (read back by the sampling check) →
-//! [`io`] writers.
+//! (with their papers, guarantees and complexity) and hold the samplers. The main path runs
+//! one way: points → [`delaunay`] → [`proximity`] (SIGDT) → [`connect`] (inflate, sculpt,
+//! loops) → [`result`] (read back by the sampling check). Files in and out (plain points,
+//! WKT, GeoJSON, GIS formats) are the crate `sigdt-io`.
 //!
 //! Evaluation metrics, the research samplers and pictures are in the `sigdt-lab` crate.
 
@@ -32,7 +32,6 @@ mod geometry;
 mod graph;
 #[doc(hidden)]
 pub mod internals;
-pub mod io;
 mod method;
 mod parallel;
 pub mod proximity;

@@ -41,17 +41,6 @@ pub(crate) fn map_slice<S: Sync, T: Send>(
     items.iter().map(f).collect()
 }
 
-/// `items.iter().map(f).collect()` for a few large items (blocks of work), each a task of
-/// its own whatever their number.
-pub(crate) fn map_each<S: Sync, T: Send>(items: &[S], f: impl Fn(&S) -> T + Sync + Send) -> Vec<T> {
-    #[cfg(feature = "parallel")]
-    if is_parallel() {
-        use rayon::prelude::*;
-        return items.par_iter().with_max_len(1).map(f).collect();
-    }
-    items.iter().map(f).collect()
-}
-
 /// Sorts distinct values (so that stability cannot matter).
 pub(crate) fn sort_unstable(items: &mut [u64]) {
     #[cfg(feature = "parallel")]

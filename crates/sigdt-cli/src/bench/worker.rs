@@ -131,7 +131,7 @@ pub fn measure(
 /// The graph-based epsilon of the case (`sigdt_lab::eval::graph_epsilon`).
 pub fn graph_epsilon(points: &Path, gt: &Path) -> Result<f64> {
     let pts = crate::input::points_of_file(points)?;
-    let gt = sigdt::io::read_edges_of(gt, pts.len())?;
+    let gt = sigdt_io::text::read_edges_of(gt, pts.len())?;
     Ok(sigdt_lab::eval::graph_epsilon(&pts, &gt)?)
 }
 
@@ -182,7 +182,7 @@ impl Truth {
 /// scored against.
 fn read_case(files: &CaseFiles, spacing: Option<f64>) -> Result<(Vec<Point>, Truth)> {
     let pts = crate::input::points_of_file(&files.points)?;
-    let gt = sigdt::io::read_edges_of(&files.gt, pts.len())?;
+    let gt = sigdt_io::text::read_edges_of(&files.gt, pts.len())?;
     let positions = match &files.truth {
         Some(path) => {
             let clean = crate::input::points_of_file(path)?;
@@ -201,7 +201,7 @@ fn read_case(files: &CaseFiles, spacing: Option<f64>) -> Result<(Vec<Point>, Tru
     let curve = match &files.curve {
         Some((points, edges)) => {
             let curve = crate::input::points_of_file(points)?;
-            let edges = sigdt::io::read_edges_of(edges, curve.len())?;
+            let edges = sigdt_io::text::read_edges_of(edges, curve.len())?;
             if edges.is_empty() {
                 anyhow::bail!("{}: the curve has no edge", points.display());
             }
@@ -220,7 +220,7 @@ fn read_case(files: &CaseFiles, spacing: Option<f64>) -> Result<(Vec<Point>, Tru
 /// who has the tool's own times.
 pub fn score_file(files: &CaseFiles, spacing: Option<f64>, edges: &Path) -> Result<Run> {
     let (pts, truth) = read_case(files, spacing)?;
-    let mut result = sigdt::io::read_edges_of(edges, pts.len())?;
+    let mut result = sigdt_io::text::read_edges_of(edges, pts.len())?;
     result.sort_unstable();
     result.dedup();
     score(&pts, true, &truth, &result, "imported", false, f64::NAN).context("scoring the result")

@@ -215,7 +215,7 @@ fn picture(
 ) -> Result<(String, String)> {
     let files = case.files(&args.data);
     let points = crate::input::points_of_file(&files.points)?;
-    let gt = sigdt::io::read_edges_of(&files.gt, points.len())?;
+    let gt = sigdt_io::text::read_edges_of(&files.gt, points.len())?;
     let rec = sigdt::reconstruct(&points, &Options { method, ..Options::default() })
         .with_context(|| format!("{method} on {}", case.name))?;
     let diff = sigdt_lab::eval::edge_diff(&rec.edges, &gt);

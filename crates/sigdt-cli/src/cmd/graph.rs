@@ -55,5 +55,5 @@ pub fn run(args: &GraphArgs, input: &Input) -> Result<()> {
     let output = Output::new(args.output.as_deref(), &args.input)?;
     let points = input.plane_points(&args.input, "graph")?;
     let edges = sigdt::proximity_graph(&points, kind)?;
-    output.write(|w| sigdt::io::write_edges(w, &edges))
+    output.write(|w| sigdt_io::text::write_edges(w, &edges))
 }

@@ -6,8 +6,8 @@ use std::time::Instant;
 use anyhow::{bail, Result};
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::Args;
-use sigdt::io::OutputFormat as TextFormat;
 use sigdt::{Expect, Method, Options, Reconstruction, Vertices};
+use sigdt_io::text::OutputFormat as TextFormat;
 
 use crate::format::{Context, OutputFormat};
 use crate::input::Input;

@@ -59,7 +59,7 @@ impl Crs {
             _ => Err(format!(
                 "{} is not a coordinate reference system sigdt knows: give EPSG:NNNN (for \
                  example EPSG:4326 for longitude/latitude, EPSG:27700 for the British grid)",
-                sigdt::io::quoted(text)
+                crate::text::quoted(text)
             )),
         }
     }

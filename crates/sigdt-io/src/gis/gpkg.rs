@@ -8,9 +8,9 @@
 
 use std::path::Path;
 
+use crate::text::quoted;
 use anyhow::{anyhow, bail, Context, Result};
 use rusqlite::{Connection, OpenFlags, OptionalExtension};
-use sigdt::io::quoted;
 use sigdt::Point;
 
 use super::crs::{Crs, WGS84_WKT};

@@ -1,5 +1,5 @@
 //! Point files in the formats people have, beside sigdt's own plain `x y` lines and `.gtn`
-//! files (read by [`sigdt::io`]): WKT, GeoJSON, NumPy `.npy` arrays and CSV tables with
+//! files (read by [`crate::text`]): WKT, GeoJSON, NumPy `.npy` arrays and CSV tables with
 //! chosen columns, each also gzip-compressed (`.gz`, or found by its magic bytes).
 //!
 //! The format is chosen once, at the entry, in this order:
@@ -12,7 +12,7 @@
 //!    fields, `;` separators or quotes;
 //! 5. the first character that is not white space: `{` or `[` is GeoJSON, a WKT keyword is
 //!    WKT; a plain file whose header names y before x (`lat,lon`) is a table, read by name;
-//!    anything else goes to [`sigdt::io`], which reads plain and `.gtn` files and refuses
+//!    anything else goes to [`crate::text`], which reads plain and `.gtn` files and refuses
 //!    what it cannot read with the file and line.
 //!
 //! Every error names the file (and the line where there is one).
@@ -26,8 +26,8 @@ mod wkt;
 use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
 
+use crate::text::PointFormat;
 use anyhow::{bail, Context, Result};
-use sigdt::io::PointFormat;
 use sigdt::Point;
 
 use crate::gis::{fgb, gpkg, shp, Crs};
@@ -107,7 +107,7 @@ enum Format {
     Wkt,
     GeoJson,
     Table,
-    /// Plain lines or `.gtn`, read by [`sigdt::io`].
+    /// Plain lines or `.gtn`, read by [`crate::text`].
     Kernel(PointFormat),
 }
 
@@ -167,7 +167,7 @@ fn uncompressed<R: BufRead>(
                 );
             };
             let read = gpkg::read(path, shown, how.layer, max)?;
-            let how = format!("layer {} of a GeoPackage", sigdt::io::quoted(&read.layer));
+            let how = format!("layer {} of a GeoPackage", crate::text::quoted(&read.layer));
             Points { points: read.points, how, crs: read.crs, lon_lat: false }
         }
         Format::FlatGeobuf => {
@@ -199,7 +199,7 @@ fn uncompressed<R: BufRead>(
                             "{shown}: GeoJSON: the \"crs\" member names {}, a coordinate system \
                              sigdt cannot read (it reads EPSG codes and CRS84, as names, OGC URNs \
                              or http URIs): write it as urn:ogc:def:crs:EPSG::NNNN",
-                            sigdt::io::quoted(&name)
+                            crate::text::quoted(&name)
                         )
                     })
                 })
@@ -211,7 +211,7 @@ fn uncompressed<R: BufRead>(
             Points { points: table.points, how: table.how, crs: None, lon_lat: table.lon_lat }
         }
         Format::Kernel(format) => {
-            let points = sigdt::io::parse_points_at_most(reader, shown, Some(format), max)?;
+            let points = crate::text::parse_points_at_most(reader, shown, Some(format), max)?;
             let how = if format == PointFormat::Gtn { ".gtn" } else { "plain lines" };
             done(points, how)
         }

@@ -13,8 +13,8 @@
 
 use std::io::Read;
 
+use crate::text::quoted;
 use anyhow::{bail, Context, Result};
-use sigdt::io::quoted;
 use sigdt::Point;
 
 /// The magic bytes of a `.npy` file.

@@ -26,8 +26,8 @@
 use std::io::BufRead;
 use std::str::FromStr;
 
+use crate::text::{max_lines, quoted, too_many_lines, MAX_LINE};
 use anyhow::{anyhow, Result};
-use sigdt::io::{max_lines, quoted, too_many_lines, MAX_LINE};
 use sigdt::Point;
 
 /// The x and y columns of `--columns`.
@@ -172,7 +172,7 @@ pub fn read(
 /// otherwise when every field that is not empty is. So a headerless table whose first row
 /// has a name, `NA` or nothing in a column not read loses no point.
 fn is_header(fields: &[String], columns: Option<&Columns>) -> bool {
-    let is_name = |field: &str| sigdt::io::is_header_name(field);
+    let is_name = |field: &str| crate::text::is_header_name(field);
     match columns {
         Some(Columns { x: Column::Number(x), y: Column::Number(y) }) => {
             [x, y].iter().all(|&&k| fields.get(k - 1).is_some_and(|f| is_name(f)))

@@ -13,7 +13,7 @@
 //!
 //! # Errors
 //! The file and the line of the first token that does not fit, saying what was expected;
-//! input is shown through [`sigdt::io::quoted`] (control characters escaped, long tokens
+//! input is shown through [`crate::text::quoted`] (control characters escaped, long tokens
 //! cut). Also refused, with the file and line: a token that is not UTF-8 text (comments are
 //! not checked), a token longer than [`MAX_LINE`] bytes, `GEOMETRYCOLLECTION`s nested more
 //! than [`MAX_DEPTH`] deep, and a failed read. More than `max_points` points stop the
@@ -25,8 +25,8 @@
 
 use std::io::{BufRead, ErrorKind};
 
+use crate::text::{quoted, wkt_geometry, MAX_LINE, WKT_GEOMETRIES};
 use anyhow::{anyhow, Result};
-use sigdt::io::{quoted, wkt_geometry, MAX_LINE, WKT_GEOMETRIES};
 use sigdt::Point;
 
 /// The deepest nesting of `GEOMETRYCOLLECTION`s read, as deep as the GeoJSON reader (and
@@ -37,7 +37,7 @@ const MAX_DEPTH: usize = 128;
 const BOM: &[u8] = b"\xEF\xBB\xBF";
 
 /// Whether `line` starts like WKT: an EWKT `SRID=` prefix, or a geometry as the kernel's
-/// reader recognises it ([`sigdt::io::wkt_geometry`]).
+/// reader recognises it ([`crate::text::wkt_geometry`]).
 pub fn starts_wkt(line: &str) -> bool {
     let line = line.trim_start();
     line.get(..5).is_some_and(|p| p.eq_ignore_ascii_case("SRID=")) || wkt_geometry(line).is_some()
@@ -487,7 +487,7 @@ mod tests {
 
     #[test]
     fn a_token_longer_than_a_mebibyte_is_refused() {
-        let text = format!("POINT ({} 0)", "1".repeat(sigdt::io::MAX_LINE + 1));
+        let text = format!("POINT ({} 0)", "1".repeat(crate::text::MAX_LINE + 1));
         let err = parse(&text).unwrap_err().to_string();
         assert_eq!(err, "t.wkt:1: WKT: token longer than 1048576 bytes");
     }

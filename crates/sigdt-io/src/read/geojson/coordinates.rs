@@ -3,9 +3,9 @@
 
 use std::fmt::{self, Display, Write as _};
 
+use crate::text::quoted;
 use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde_json::{Number, Value};
-use sigdt::io::quoted;
 use sigdt::Point;
 
 use super::{Kind, Walk};

@@ -37,9 +37,9 @@ use std::cell::Cell;
 use std::fmt;
 use std::io::Read;
 
+use crate::text::quoted;
 use anyhow::{anyhow, Result};
 use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
-use sigdt::io::quoted;
 use sigdt::Point;
 
 use coordinates::{Deferred, Node};

@@ -1,7 +1,7 @@
 //! Reading point and edge files, and writing results as text.
 //!
 //! - Readers stream line by line with bounded memory and report every problem as
-//!   [`Error::Parse`](crate::Error::Parse) naming the file and the 1-based line.
+//!   [`Error::Parse`](sigdt::Error::Parse) naming the file and the 1-based line.
 //! - Writers give edge lists, ordered loops, WKT and GeoJSON ([`OutputFormat`]).
 
 mod read;

@@ -2,7 +2,7 @@
 
 mod edges;
 mod gtn;
-pub(in crate::io) mod lines;
+pub(in crate::text) mod lines;
 mod points;
 
 pub use edges::{parse_edges, parse_edges_of, read_edges, read_edges_of};

@@ -40,7 +40,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     files.sort();
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     for path in &files {
-        let points = sigdt::io::read_points(path)?;
+        let points = sigdt_io::text::read_points(path)?;
         let name = path.display();
         let dt = Triangulation::new(&points)?;
         let show = |text: String| if full { text } else { format!("{:016x}", fnv(&text)) };

@@ -3,8 +3,8 @@
 use std::io;
 
 use super::geometry::{geometry, write_pair, Kind, Notation};
-use crate::geometry::Point;
-use crate::result::Reconstruction;
+use sigdt::Point;
+use sigdt::Reconstruction;
 
 /// The WKT notation.
 pub(super) struct Wkt;

@@ -10,7 +10,7 @@ fn bundled(name: &str) -> PathBuf {
 
 #[test]
 fn bundled_glyph_sigma_is_exact() -> Result<(), Error> {
-    let points = sigdt::io::read_points(&bundled("glyph_sigma.xy"))?;
+    let points = sigdt_io::text::read_points(&bundled("glyph_sigma.xy"))?;
     let rec = sigdt::reconstruct(&points, &sigdt::Options::default())?;
     assert!(rec.status.is_manifold());
     assert_eq!((rec.edges.len(), rec.loops.len()), (245, 1));
@@ -19,16 +19,16 @@ fn bundled_glyph_sigma_is_exact() -> Result<(), Error> {
     // Inflating and leaf elimination may add Delaunay edges beyond SIGDT; all are Delaunay.
     let dt = sigdt::proximity_graph(&points, sigdt::GraphKind::Dt)?;
     assert!(rec.edges.iter().all(|e| dt.binary_search(e).is_ok()));
-    assert_eq!(rec.edges, sigdt::io::read_edges(&bundled("glyph_sigma.gt"))?);
+    assert_eq!(rec.edges, sigdt_io::text::read_edges(&bundled("glyph_sigma.gt"))?);
     Ok(())
 }
 
 #[test]
 fn bundled_demo_is_exact() -> Result<(), Error> {
-    let points = sigdt::io::read_points(&bundled("glyph_n_tilde.xy"))?;
+    let points = sigdt_io::text::read_points(&bundled("glyph_n_tilde.xy"))?;
     let rec = reconstruct(&points, &Options::default())?;
     assert_eq!(rec.status, Status::Polygons);
-    assert_eq!(rec.edges, sigdt::io::read_edges(&bundled("glyph_n_tilde.gt"))?);
+    assert_eq!(rec.edges, sigdt_io::text::read_edges(&bundled("glyph_n_tilde.gt"))?);
     Ok(())
 }
 

@@ -4,8 +4,8 @@
 use std::io::BufRead;
 
 use super::lines::{coordinate, quoted, too_many, Lines};
-use crate::error::Result;
-use crate::geometry::Point;
+use sigdt::Point;
+use sigdt::Result;
 
 /// Gtn points: the header `N 2 0 0`, then `N` lines `index x y`.
 pub(super) fn gtn<R: BufRead>(lines: &mut Lines<R>, max_points: usize) -> Result<Vec<Point>> {
@@ -84,10 +84,10 @@ fn gtn_point(line: &str, expected: usize) -> Result<Point, String> {
 
 #[cfg(test)]
 mod tests {
-    use crate::error::Result;
-    use crate::geometry::Point;
-    use crate::io::read::lines::tests::error;
-    use crate::io::{parse_points, PointFormat};
+    use crate::text::read::lines::tests::error;
+    use crate::text::{parse_points, PointFormat};
+    use sigdt::Point;
+    use sigdt::Result;
 
     fn parse(text: &str, format: Option<PointFormat>) -> Result<Vec<Point>> {
         parse_points(text.as_bytes(), "t.xy", format)

@@ -15,8 +15,8 @@ use std::io::{self, Write};
 use std::path::Path;
 use std::str::FromStr;
 
-use crate::geometry::{Edge, Point};
-use crate::result::Reconstruction;
+use sigdt::Reconstruction;
+use sigdt::{Edge, Point};
 
 /// A text format for results. Spelled `edges`, `loops`, `wkt` and `geojson`; [`FromStr`]
 /// and [`Display`](fmt::Display) map between the two.
@@ -69,10 +69,17 @@ impl fmt::Display for OutputFormat {
 }
 
 impl FromStr for OutputFormat {
-    type Err = crate::error::Error;
+    type Err = sigdt::Error;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        crate::error::find_by_name(OutputFormat::ALL, OutputFormat::name, s, "output format")
+        let found = OutputFormat::ALL.iter().copied().find(|f| f.name() == s);
+        found.ok_or_else(|| {
+            let names: Vec<_> = OutputFormat::ALL.iter().map(|f| f.name()).collect();
+            sigdt::Error::InvalidOption(format!(
+                "unknown output format '{s}' (expected one of: {})",
+                names.join(", ")
+            ))
+        })
     }
 }
 
@@ -92,7 +99,7 @@ pub fn write_reconstruction<W: Write>(
 #[derive(Debug, Clone, Default)]
 pub struct WriteOptions {
     /// The method that made the result: GeoJSON's `method` property (none when `None`).
-    pub method: Option<crate::Method>,
+    pub method: Option<sigdt::Method>,
     /// A coordinate system's name (`urn:ogc:def:crs:EPSG::27700`) for GeoJSON's legacy
     /// `crs` member (GeoJSON 2008), which RFC 7946 removed: only for readers that still
     /// honour it, when the coordinates are not WGS 84 longitude/latitude.
@@ -146,7 +153,7 @@ fn loops(out: &mut Vec<u8>, rec: &Reconstruction) -> io::Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::result::Status;
+    use sigdt::Status;
 
     const SQUARE: [Point; 4] = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
 
@@ -267,7 +274,7 @@ mod tests {
         let own = Reconstruction {
             edges: vec![[0, 1]],
             paths: vec![vec![0, 1]],
-            vertices: crate::result::Vertices::New(vec![[0.5, 0.0], [0.5, 1.0]]),
+            vertices: sigdt::Vertices::New(vec![[0.5, 0.0], [0.5, 1.0]]),
             ..self::path()
         };
         let own = text(GeoJson, &SQUARE, &own);
@@ -275,15 +282,17 @@ mod tests {
         assert!(own.contains(counts) && own.contains("[[0.5, 0.0], [0.5, 1.0]]"), "{own}");
         let stuck = Reconstruction {
             status: Status::SculptingStuck { left_out: vec![2, 5] },
-            left_out: crate::result::inside_left_out(&[2, 5]),
+            left_out: [2, 5]
+                .map(|index| sigdt::LeftOut { index, reason: sigdt::LeftOutReason::Inside })
+                .to_vec(),
             ..empty()
         };
         let stuck = text(GeoJson, &[], &stuck);
         assert!(stuck.contains(r#""geometry": null"#), "{stuck}");
         let end = r#""duplicates": 0, "left_out": [2, 5], "left_out_reasons": ["inside", "inside"], "warning": true}}"#;
         assert!(stuck.ends_with(&format!("{end}\n")), "{stuck}");
-        let finding = crate::result::Finding {
-            kind: crate::result::FindingKind::SmallLoops,
+        let finding = sigdt::Finding {
+            kind: sigdt::FindingKind::SmallLoops,
             count: 1,
             worst: 3.0,
             at: 0,

@@ -7,8 +7,8 @@
 use std::io::{self, Write};
 
 use super::geometry::{geometry, write_pair, Kind, Notation};
-use crate::geometry::Point;
-use crate::result::{Finding, Reconstruction, Vertices};
+use sigdt::Point;
+use sigdt::{Finding, Reconstruction, Vertices};
 
 /// The GeoJSON notation of geometry objects.
 pub(super) struct GeoJson;

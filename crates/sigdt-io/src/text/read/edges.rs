@@ -5,8 +5,8 @@ use std::io::{BufRead, BufReader};
 use std::path::Path;
 
 use super::lines::{max_lines, pair, quoted, Lines};
-use crate::error::{Error, Result};
-use crate::geometry::Edge;
+use sigdt::Edge;
+use sigdt::{Error, Result};
 
 /// Reads the edges of the file at `path`; see [`parse_edges`].
 pub fn read_edges(path: &Path) -> Result<Vec<Edge>> {
@@ -32,7 +32,7 @@ pub fn parse_edges<R: BufRead>(reader: R, name: &str) -> Result<Vec<Edge>> {
 /// refused after that many lines.
 ///
 /// ```
-/// use sigdt::io::parse_edges_of;
+/// use sigdt_io::text::parse_edges_of;
 /// assert_eq!(parse_edges_of("0 1\n2 1\n".as_bytes(), "t.gt", 3).unwrap(), [[0, 1], [1, 2]]);
 /// let err = parse_edges_of("0 1\n1 3\n".as_bytes(), "t.gt", 3).unwrap_err();
 /// assert_eq!(err.to_string(), "t.gt:2: edge 1 3 refers to point 3, but there are 3 points");
@@ -74,7 +74,7 @@ fn edge(line: &str) -> Result<Edge, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::read::lines::tests::error;
+    use crate::text::read::lines::tests::error;
 
     #[test]
     fn edges_and_their_errors() {

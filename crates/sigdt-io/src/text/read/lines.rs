@@ -8,7 +8,7 @@
 
 use std::io::{BufRead, ErrorKind};
 
-use crate::error::{Error, Result};
+use sigdt::{Error, Result};
 
 /// The longest line a reader accepts, in bytes (1 MiB), not counting the line ending.
 pub const MAX_LINE: usize = 1 << 20;
@@ -354,7 +354,7 @@ const SHOWN_CHARS: usize = 40;
 /// 40 characters. Every reader's messages quote input through it.
 ///
 /// ```
-/// assert_eq!(sigdt::io::quoted("a\x1b[2J"), r"'a\u{1b}[2J'");
+/// assert_eq!(sigdt_io::text::quoted("a\x1b[2J"), r"'a\u{1b}[2J'");
 /// ```
 pub fn quoted(token: &str) -> String {
     let mut shown = String::from("'");
@@ -391,14 +391,14 @@ pub(super) fn too_many(max: usize) -> String {
 
 #[cfg(test)]
 pub(super) mod tests {
-    use crate::error::{Error, Result};
-    use crate::io::{parse_edges, parse_points};
+    use crate::text::{parse_edges, parse_points};
+    use sigdt::{Error, Result};
     use std::io::{BufReader, Read};
 
     use super::MAX_LINE;
 
     /// The `line: message` of a parse error in the file `t.xy`.
-    pub(in crate::io) fn error(result: Result<impl std::fmt::Debug>) -> String {
+    pub(in crate::text) fn error(result: Result<impl std::fmt::Debug>) -> String {
         match result.unwrap_err() {
             Error::Parse { path, line, message } if path == "t.xy" => format!("{line}: {message}"),
             e => panic!("not a parse error: {e}"),

@@ -6,8 +6,8 @@
 //! clockwise (as both formats recommend). A ring repeats its first point at the end.
 use std::io::{self, Write};
 
-use crate::geometry::Point;
-use crate::result::Reconstruction;
+use sigdt::Point;
+use sigdt::Reconstruction;
 
 /// The geometry types both notations share.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -20,8 +20,9 @@ use std::path::Path;
 
 use super::gtn::{gtn, is_gtn_header};
 use super::lines::{coordinate, fields, max_lines, pair, too_many, Block, Lines};
-use crate::error::{Error, Result};
-use crate::geometry::Point;
+use rayon::prelude::*;
+use sigdt::Point;
+use sigdt::{Error, Result};
 
 /// A point file format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -50,7 +51,7 @@ impl PointFormat {
     /// (`N 2 0 0`), else plain, as [`parse_points`] decides it.
     ///
     /// ```
-    /// use sigdt::io::PointFormat;
+    /// use sigdt_io::text::PointFormat;
     /// use std::path::Path;
     /// assert_eq!(PointFormat::detect(Path::new("a"), "3 2 0 0"), PointFormat::Gtn);
     /// assert_eq!(PointFormat::detect(Path::new("a.xy"), "3 2 0 0"), PointFormat::Plain);
@@ -87,7 +88,7 @@ pub fn read_points_at_most(path: &Path, max_points: usize) -> Result<Vec<Point>>
 /// Empty input gives no points, except in the `.gtn` format, which needs its header.
 ///
 /// ```
-/// use sigdt::io::parse_points;
+/// use sigdt_io::text::parse_points;
 /// let points = parse_points("x,y\n0,0\n1.5, 2 # a comment\n".as_bytes(), "<stdin>", None);
 /// assert_eq!(points.unwrap(), vec![[0.0, 0.0], [1.5, 2.0]]);
 /// ```
@@ -180,7 +181,10 @@ fn plain_in_blocks<R: BufRead>(
             return failed.map_or(Ok(points), Err);
         }
         let room = max_points - points.len();
-        let parsed = crate::parallel::map_each(&blocks, |block| plain_block(block, room));
+        // Each block a task of its own, on the current rayon pool (the same points at every
+        // thread count).
+        let parsed: Vec<_> =
+            blocks.par_iter().with_max_len(1).map(|block| plain_block(block, room)).collect();
         for (block, (mut found, mut problem)) in blocks.iter().zip(parsed) {
             let room = max_points - points.len();
             if found.len() > room {
@@ -260,7 +264,7 @@ pub const WKT_GEOMETRIES: [&str; 7] = [
 /// refuses such a file by name; the command line reads it.
 ///
 /// ```
-/// use sigdt::io::wkt_geometry;
+/// use sigdt_io::text::wkt_geometry;
 /// assert_eq!(wkt_geometry("MultiPoint Z ((1 2 3))"), Some("MULTIPOINT"));
 /// assert_eq!(wkt_geometry("point x"), None);
 /// ```
@@ -287,7 +291,7 @@ fn is_header(line: &str) -> bool {
 /// rule of the plain reader's header, shared with the CLI's tables.
 ///
 /// ```
-/// use sigdt::io::is_header_name;
+/// use sigdt_io::text::is_header_name;
 /// assert!(is_header_name("lon") && is_header_name("X coordinate"));
 /// assert!(!is_header_name("1.5") && !is_header_name("0x1p3") && !is_header_name("NaN"));
 /// ```
@@ -300,8 +304,8 @@ pub fn is_header_name(field: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::read::lines::tests::error;
-    use crate::io::read::lines::MAX_LINE;
+    use crate::text::read::lines::tests::error;
+    use crate::text::read::lines::MAX_LINE;
 
     fn parse(text: &str, format: Option<PointFormat>) -> Result<Vec<Point>> {
         parse_points(text.as_bytes(), "t.xy", format)
@@ -350,7 +354,7 @@ mod tests {
             b"1\x002\n",
             b"x y\n",
         ];
-        let mut rng = crate::samplers::Rng::new(11);
+        let mut rng = sigdt::samplers::Rng::new(11);
         for case in 0..3000 {
             let lines = 1 + rng.below(40);
             let broken = rng.below(4) == 0;
@@ -417,7 +421,7 @@ mod tests {
         // one gives the same point.
         let tokens = ["1", "-2.5", "3e2", "nan", "inf", "1e999", ".5", "x", "", "0x1", "1,5"];
         let gaps = [" ", "\t", "  ", " \t ", ",", " , ", "\u{c}", "\u{a0}", ""];
-        let mut rng = crate::samplers::Rng::new(2);
+        let mut rng = sigdt::samplers::Rng::new(2);
         let (mut short, mut cases) = (0, 0);
         for _ in 0..20_000 {
             let mut line = String::new();

@@ -1,5 +1,5 @@
 //! Time to read a point file: `cargo run --release -p sigdt --example read_speed -- FILE [REPS]`
-//! reads FILE with [`sigdt::io::read_points`] on a pool of one thread and on one of two,
+//! reads FILE with [`sigdt_io::text::read_points`] on a pool of one thread and on one of two,
 //! alternately, and prints the median time of each (the reader parses blocks of lines in
 //! parallel; the points are the same).
 use std::path::Path;
@@ -16,7 +16,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         for (pool, times) in pools.iter().zip(&mut times) {
             let pool = pool.as_ref().map_err(|e| e.to_string())?;
             let start = Instant::now();
-            let points = pool.install(|| sigdt::io::read_points(Path::new(&file)))?;
+            let points = pool.install(|| sigdt_io::text::read_points(Path::new(&file)))?;
             times.push(start.elapsed().as_secs_f64() * 1e3);
             assert_eq!(*first.get_or_insert_with(|| points.clone()), points);
         }
