@@ -16,7 +16,8 @@ from ._input import (
     _check_method,
     _is_geographic,
 )
-from ._result import Coordinates, Indices, Reconstruction
+from ._outlines import Coordinates, Indices
+from ._result import Reconstruction
 from ._types import Expect, Method
 from .errors import InvalidInputError, SigdtWarning
 

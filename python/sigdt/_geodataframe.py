@@ -13,7 +13,7 @@ import numpy as np
 if TYPE_CHECKING:  # pragma: no cover
     from geopandas import GeoDataFrame
 
-    from ._result import Reconstruction
+    from ._outlines import Outlines
 else:
     GeoDataFrame = Any
 
@@ -21,11 +21,11 @@ else:
 CURVE_COLUMNS = ["kind", "method", "status", "warning", "diagnosis", "n_vertices"]
 
 
-def _diagnosis(rec: Reconstruction) -> str:
+def _diagnosis(rec: Outlines) -> str:
     return "; ".join(f["message"] for f in rec.diagnosis)
 
 
-def to_geopandas(rec: Reconstruction) -> GeoDataFrame:
+def to_geopandas(rec: Outlines) -> GeoDataFrame:
     """``rec`` as a ``GeoDataFrame`` in ``rec.crs``: one row per polygon (a loop with the
     loops directly inside it as holes, :attr:`Reconstruction.polygons`) and one per open
     path (a ``LineString``).

@@ -2,38 +2,25 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Union, cast, get_args
+from typing import TYPE_CHECKING, Any, cast, get_args
 
 import numpy as np
-import numpy.typing as npt
 
 from . import _core
+from ._outlines import Coordinates, Indices, ShapelyResult
 from ._types import Finding, GeoJsonFeature, LeftOutReason, Method, Status, VerticesKind
 
 if TYPE_CHECKING:  # pragma: no cover
-    import shapely
     from geopandas import GeoDataFrame
     from matplotlib.axes import Axes
 
     from ._core import _Reconstruction
 
-    #: What :meth:`Reconstruction.to_shapely` returns.
-    ShapelyResult = Union[
-        shapely.Polygon,
-        shapely.MultiPolygon,
-        shapely.LineString,
-        shapely.MultiLineString,
-        shapely.GeometryCollection,
-    ]
 else:
     # Named at run time too, for documentation tools that evaluate annotations (the
     # extension's result dict; shapely and matplotlib are optional, imported when used).
     _Reconstruction = dict
-    ShapelyResult = Axes = GeoDataFrame = Any
-
-#: int64 index arrays and float64 coordinate arrays.
-Indices = npt.NDArray[np.int64]
-Coordinates = npt.NDArray[np.float64]
+    Axes = GeoDataFrame = Any
 
 __all__ = ["Reconstruction"]
 

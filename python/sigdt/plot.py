@@ -15,7 +15,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from ._result import Reconstruction
+    from ._outlines import Outlines
     from ._trace import Trace
 
 __all__ = ["plot", "plot_steps"]
@@ -32,7 +32,7 @@ FILL, INK = PALETTE["fill"], PALETTE["ink"]
 
 
 def plot(
-    rec: Reconstruction,
+    rec: Outlines,
     ax: Any = None,
     *,
     fill: Any = FILL,
@@ -87,7 +87,7 @@ def plot(
     return ax
 
 
-def _polylines(rec: Reconstruction) -> list[np.ndarray]:
+def _polylines(rec: Outlines) -> list[np.ndarray]:
     """The edges as few polylines: each loop closed, each path, then every edge on neither
     as a segment of its own (matplotlib makes one path per polyline: a million separate
     segments took 10 s)."""

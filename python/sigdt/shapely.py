@@ -9,17 +9,17 @@ from typing import TYPE_CHECKING, cast
 import numpy as np
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ._result import Coordinates, Reconstruction, ShapelyResult
+    from ._outlines import Coordinates, Outlines, ShapelyResult
     from ._types import GeoJsonFeature
 
 __all__ = ["from_shapely", "to_geojson", "to_shapely", "to_svg", "to_wkt"]
 
 
-def _rings(rec: Reconstruction) -> list[np.ndarray]:
+def _rings(rec: Outlines) -> list[np.ndarray]:
     return [rec.vertices[loop] for loop in rec.loops]
 
 
-def to_shapely(rec: Reconstruction, *, faces: bool = False) -> ShapelyResult:
+def to_shapely(rec: Outlines, *, faces: bool = False) -> ShapelyResult:
     """The result as a shapely geometry: loops as polygons, open paths as lines.
 
     A loop inside another one (SIG-AUTO returns nested curves, such as the two outlines of
@@ -125,7 +125,7 @@ def from_shapely(geometry: object) -> Coordinates:
     return np.ascontiguousarray(shapely.get_coordinates(geometry), dtype=np.float64)
 
 
-def _text(rec: Reconstruction, fmt: str) -> str:
+def _text(rec: Outlines, fmt: str) -> str:
     """The result in ``fmt`` by the CLI's writer (``sigdt_io::text::write_reconstruction``)."""
     from . import _core
 
@@ -133,7 +133,7 @@ def _text(rec: Reconstruction, fmt: str) -> str:
     return _core.write_reconstruction(points, rec._fields, fmt)
 
 
-def to_geojson(rec: Reconstruction) -> GeoJsonFeature:
+def to_geojson(rec: Outlines) -> GeoJsonFeature:
     """A GeoJSON ``Feature``: the geometry of :func:`to_shapely` (without needing shapely),
     with status and counts as properties, the points left out with their reasons, whether
     the result warns, and the sampling check's findings.
@@ -150,7 +150,7 @@ def to_geojson(rec: Reconstruction) -> GeoJsonFeature:
     return cast("GeoJsonFeature", json.loads(_text(rec, "geojson")))
 
 
-def to_wkt(rec: Reconstruction) -> str:
+def to_wkt(rec: Outlines) -> str:
     """The geometry of :func:`to_shapely` as WKT, without needing shapely: the text of
     ``sigdt reconstruct --format wkt`` for the same result (one writer makes both), without
     its final newline. Coordinates are written so that they read back exactly (``1.0``,
@@ -158,7 +158,7 @@ def to_wkt(rec: Reconstruction) -> str:
     return _text(rec, "wkt").rstrip("\n")
 
 
-def to_svg(rec: Reconstruction, width: int = 400) -> str:
+def to_svg(rec: Outlines, width: int = 400) -> str:
     """A standalone SVG picture ``width`` pixels wide: the loops filled (holes even-odd), the
     edges and the points, y pointing up, framed and coloured as ``sigdt render`` draws them
     (any finite coordinates, up to ``±sys.float_info.max``, give a picture).
