@@ -59,9 +59,11 @@ def reconstruct_frame(
     ----------
     frame : GeoDataFrame or GeoSeries of points
         The points; empty or missing points are refused naming the row.
-    by : column name, list of column names, or None
+    by : column name, list or tuple of column names or Series, Series, or None
         The column(s) whose values group the rows (one building, island or survey line
-        each), as ``frame.groupby(by)``; ``None``: all rows are one group.
+        each), as ``frame.groupby(by)`` groups them (a tuple is a list of columns here);
+        the result's index is that of ``frame.groupby(by).size()``. ``None``: all rows
+        are one group.
     method, leaf_elimination, expect
         As in :func:`sigdt.reconstruct` (``expect="areas"`` for groups that outline areas).
     n_jobs : int, optional
@@ -116,13 +118,17 @@ def reconstruct_frame(
             "for arrays use sigdt.reconstruct_many"
         )
     crs = frame.crs
-    if by is None:
-        keys: list[Any] = [None]
-        groups = [frame]
-    else:
-        grouped = frame.groupby(by, sort=True, dropna=False)
-        keys = list(grouped.groups.keys())
-        groups = [grouped.get_group(k) for k in keys]
+    # pandas reads a tuple as one key (a column named by a tuple): a tuple of columns is a list.
+    if isinstance(by, tuple):
+        by = list(by)
+    keys: list[Any] = [None]
+    groups = [frame]
+    if by is not None:
+        # One pass over the groups: their keys as pandas gives them (tuples for a list of
+        # columns, a list of one included), which `get_group` does not take back everywhere.
+        pairs = list(frame.groupby(by, sort=True, dropna=False))
+        keys = [k[0] if isinstance(by, list) and len(by) == 1 else k for k, _ in pairs]
+        groups = [group for _, group in pairs]
     arrays = []
     for key, group in zip(keys, groups):
         try:
@@ -156,10 +162,17 @@ def reconstruct_frame(
         "n_left_out": np.asarray([len(r.left_out) for r in results], dtype=np.int64),
     }
     geometry = [r.to_shapely() for r in results]
+
+    # The index `frame.groupby(by).size()` would have: a column's or a series' name.
+    def name(b: Any) -> Any:
+        return b.name if isinstance(b, pd.Series) else b
+
     if by is None:
         index = pd.RangeIndex(1)
-    elif isinstance(by, (list, tuple)):
-        index = pd.MultiIndex.from_tuples(keys, names=list(by))
+    elif isinstance(by, list) and len(by) > 1:
+        index = pd.MultiIndex.from_tuples(keys, names=[name(b) for b in by])
+    elif isinstance(by, list):
+        index = pd.Index(keys, name=name(by[0]))
     else:
-        index = pd.Index(keys, name=by)
+        index = pd.Index(keys, name=name(by))
     return gpd.GeoDataFrame(rows, geometry=geometry, crs=crs, index=index)

@@ -94,6 +94,20 @@ def test_reconstruct_frame_gives_one_row_per_group() -> None:
     assert len(whole) == 1 and whole.geometry.iloc[0].equals(alone)
 
 
+def test_reconstruct_frame_groups_as_pandas_does() -> None:
+    # Issue 47, P1: by=["k"] raised KeyError, and by=("k",) and by=series failed too.
+    square = [[0, 0], [9, 0], [9, 9], [0, 9]]
+    points = shapely.points(np.r_[square, np.add(square, 50)])
+    frame = gpd.GeoDataFrame({"k": ["a"] * 4 + ["b"] * 4, "j": [1] * 8}, geometry=points)
+    for by in ["k", ["k"], ("k",), frame["k"]]:
+        out = sigdt.reconstruct_frame(frame, by=by, progress=False)
+        assert (list(out.index), out.index.name) == (["a", "b"], "k"), by
+        assert out["status"].tolist() == ["polygon", "polygon"], by
+    for by in [["k", "j"], ("k", "j"), [frame["k"], "j"]]:
+        out = sigdt.reconstruct_frame(frame, by=by, progress=False)
+        assert list(out.index) == [("a", 1), ("b", 1)] and list(out.index.names) == ["k", "j"]
+
+
 def test_reconstruct_frame_refuses_what_is_not_a_frame_and_warns_once() -> None:
     with pytest.raises(TypeError, match="GeoDataFrame or GeoSeries"):
         sigdt.reconstruct_frame(np.zeros((4, 2)))

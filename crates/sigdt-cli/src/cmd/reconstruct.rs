@@ -77,6 +77,19 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
             }
         },
     };
+    if let (OutputFormat::GeoPackage, Some(out)) = (format, args.output.as_deref()) {
+        // The GeoPackage is replaced whole: a user's other layers in it would be lost.
+        let foreign = sigdt_io::gis::gpkg::foreign_tables(out);
+        if !foreign.is_empty() {
+            let names: Vec<_> = foreign.iter().map(|t| sigdt_io::text::quoted(t)).collect();
+            bail!(
+                "{}: a GeoPackage holding other tables ({}); writing the result replaces it \
+                 whole: refusing (choose another file)",
+                out.display(),
+                names.join(", ")
+            );
+        }
+    }
     if args.no_leaf_elimination && args.method != Method::SigConnect2d {
         // Dropping the flag without a word would hide that another method ran than the one
         // meant (SIG-CONNECT2D was the default before SIG-AUTO).

@@ -243,3 +243,21 @@ fn a_layer_whose_system_has_no_row_says_so() {
     sigdt(&["reconstruct", arg(&copy)])
         .error(&["its srs_id 99999 has no row in gpkg_spatial_ref_sys"]);
 }
+
+#[test]
+fn a_geopackage_with_other_layers_is_not_replaced() {
+    // Issue 47, O1: `-o` onto an existing GeoPackage replaced it whole, deleting the user's
+    // other layers, with exit status 0.
+    let dir = tempdir();
+    let theirs = dir.path().join("theirs.gpkg");
+    fs::copy(gis("two_layers.gpkg"), &theirs).unwrap();
+    let before = fs::read(&theirs).unwrap();
+    let input = gis("sigma_27700.gpkg");
+    sigdt(&["reconstruct", arg(&input), "-o", arg(&theirs)])
+        .error(&["a GeoPackage holding other tables ('hull', 'points')", "refusing"]);
+    assert_eq!(fs::read(&theirs).unwrap(), before);
+    // sigdt's own output is replaced, as any output file is.
+    let ours = dir.path().join("ours.gpkg");
+    sigdt(&["reconstruct", arg(&input), "-o", arg(&ours)]).ok();
+    sigdt(&["reconstruct", arg(&input), "-o", arg(&ours), "--method", "emst"]).expect(0);
+}

@@ -106,6 +106,28 @@ pub fn read(path: &Path, name: &str, layer: Option<&str>, max: usize) -> Result<
     Ok(Read { points, crs, layer: chosen.table.clone() })
 }
 
+/// The layers of the GeoPackage at `path` that sigdt would not write itself (every table
+/// but `curves`, `left_out` and the GeoPackage's own `gpkg_*` and `rtree_*` tables), so that
+/// writing over it does not delete a user's layers; empty when `path` is not a readable
+/// SQLite file (a file of another kind is the caller's to refuse or replace).
+pub fn foreign_tables(path: &Path) -> Vec<String> {
+    let flags = OpenFlags::SQLITE_OPEN_READ_ONLY | OpenFlags::SQLITE_OPEN_NO_MUTEX;
+    let Ok(db) = Connection::open_with_flags(path, flags) else { return Vec::new() };
+    let query = "SELECT name FROM sqlite_master WHERE type IN ('table', 'view') ORDER BY name";
+    let names = db.prepare(query).and_then(|mut statement| {
+        statement
+            .query_map([], |row| row.get::<_, String>(0))?
+            .collect::<rusqlite::Result<Vec<_>>>()
+    });
+    let ours = |name: &str| {
+        matches!(name, "curves" | "left_out")
+            || name.starts_with("gpkg_")
+            || name.starts_with("rtree_")
+            || name.starts_with("sqlite_")
+    };
+    names.unwrap_or_default().into_iter().filter(|name| !ours(name)).collect()
+}
+
 /// A feature layer of a GeoPackage.
 struct Layer {
     table: String,
