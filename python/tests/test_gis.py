@@ -185,3 +185,22 @@ def test_read_points_reads_gis_files_and_layers() -> None:
         sigdt.read_points(GIS / "two_layers.gpkg", layer="roads")
     with pytest.raises(ValueError, match="which has no layers"):
         sigdt.read_points(GIS / "sigma_27700.fgb", layer="x")
+
+
+def test_the_cli_and_python_agree_on_which_systems_are_degrees(cli: Path, tmp_path: Path) -> None:
+    # Issue 47, K2: the CLI took EPSG 4000-4999 for degrees, Python asks pyproj: degrees in
+    # EPSG:6318 and 7844 were a plane to the CLI, metres in 4087 and 4978 degrees.
+    turn = np.linspace(0, 2 * np.pi, 24, endpoint=False)
+    ring = np.c_[10 + 0.01 * np.cos(turn), 50 + 0.01 * np.sin(turn)]
+    for code in [6318, 7844, 4326, 4087, 4978, 27700]:
+        points = gpd.GeoSeries(shapely.points(ring), crs=code)
+        path = tmp_path / f"p{code}.gpkg"
+        points.to_file(path)
+        run = subprocess.run(
+            [str(cli), "reconstruct", str(path), "-v", "-o", str(tmp_path / f"o{code}.edges")],
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+        in_plane = "is longitude/latitude: reconstructed in" in run.stderr
+        assert in_plane == points.crs.is_geographic, (code, run.stderr)

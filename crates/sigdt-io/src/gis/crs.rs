@@ -5,6 +5,8 @@
 
 use std::fmt;
 
+use super::geographic_codes::GEOGRAPHIC;
+
 /// A coordinate reference system.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Crs {
@@ -119,8 +121,9 @@ impl Crs {
     }
 
     /// Whether coordinates are longitude and latitude in degrees: `Some(true)` for a
-    /// geographic system (EPSG codes 4000–4999, or a WKT `GEOGCS`/`GEOGCRS`), `Some(false)`
-    /// for one known to be projected, `None` when the definition does not say.
+    /// geographic system (a WKT `GEOGCS`/`GEOGCRS`, or an EPSG code of the registry's
+    /// geographic systems, `geographic_codes.rs`), `Some(false)` for any other (projected,
+    /// geocentric: the code is not among them), `None` when nothing says.
     pub fn is_geographic(&self) -> Option<bool> {
         if let Some(wkt) = &self.wkt {
             let head = wkt.trim_start().to_ascii_uppercase();
@@ -131,7 +134,7 @@ impl Crs {
                 return Some(false);
             }
         }
-        self.epsg.map(|code| (4000..5000).contains(&code))
+        self.epsg.map(|code| GEOGRAPHIC.binary_search(&code).is_ok())
     }
 }
 
@@ -284,5 +287,19 @@ mod tests {
         for text in ["urn:ogc:def:crs:ESRI::102100", "http://www.opengis.net/def/crs/EPSG/27700"] {
             assert!(Crs::parse(text).is_err(), "{text}");
         }
+    }
+
+    #[test]
+    fn geographic_is_decided_by_the_registry_not_a_range_of_codes() {
+        // Issue 47, K2: degrees in EPSG:6318 (NAD83(2011)) and 7844 (GDA2020) were read as a
+        // plane, and metres in EPSG:4087 (World Equidistant Cylindrical) and 4978 (WGS 84
+        // geocentric) as degrees.
+        for code in [4326, 4269, 4258, 6318, 7844, 4979, 10671] {
+            assert_eq!(Crs::epsg(code).is_geographic(), Some(true), "EPSG:{code}");
+        }
+        for code in [4087, 4978, 3857, 27700, 32633, 2154] {
+            assert_eq!(Crs::epsg(code).is_geographic(), Some(false), "EPSG:{code}");
+        }
+        assert!(GEOGRAPHIC.windows(2).all(|w| w[0] < w[1]), "sorted, for the binary search");
     }
 }

@@ -4,6 +4,7 @@
 
 pub mod crs;
 pub mod fgb;
+mod geographic_codes;
 pub mod gpkg;
 pub mod layers;
 pub mod local;
