@@ -36,19 +36,55 @@ pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<Vec<Point>>
             Err(e) => bail!("{name}: cannot read: {e}"),
         }
         // The length counts 16-bit words.
-        let words = u32::from_be_bytes(head[4..8].try_into().expect("4 bytes")) as u64;
+        let bytes = u32::from_be_bytes(head[4..8].try_into().expect("4 bytes")) as u64 * 2;
+        // The shape's counts first: a record that will add more points than are left under
+        // the limit is refused before its coordinates are buffered (a gzipped record of
+        // gigabytes would be read whole otherwise).
         let mut content = Vec::new();
-        let got = (&mut reader)
-            .take(words * 2)
+        let counts = bytes.min(COUNTS_BYTES);
+        let mut got = (&mut reader)
+            .take(counts)
             .read_to_end(&mut content)
             .map_err(|e| anyhow!("{name}: cannot read: {e}"))?;
-        if (got as u64) < words * 2 {
+        // A count the record cannot hold is a lie, which `record` names: only one that fits
+        // is refused here.
+        let fewest = fewest_points(&content);
+        if fewest > max - points.len() && (fewest as u64).saturating_mul(16) <= bytes {
+            bail!(
+                "{name}: Shapefile record {number}: more than {max} points (raise --max-points \
+                 to read more)"
+            );
+        }
+        got += (&mut reader)
+            .take(bytes - counts)
+            .read_to_end(&mut content)
+            .map_err(|e| anyhow!("{name}: cannot read: {e}"))?;
+        if (got as u64) < bytes {
             bail!("{name}: Shapefile: the file ends inside record {number}");
         }
         record(&content, &mut points, max)
             .map_err(|why| anyhow!("{name}: Shapefile record {number}: {why}"))?;
     }
     Ok(points)
+}
+
+/// The bytes of a record up to its point count: shape type, bounding box, parts and points.
+const COUNTS_BYTES: u64 = 44;
+
+/// The fewest points the record beginning with `head` (at most [`COUNTS_BYTES`]) adds: its
+/// point count, less one closing repeat a ring for polygons; 0 when the counts are not
+/// there (the record is refused when it is read).
+fn fewest_points(head: &[u8]) -> usize {
+    let int = |at: usize| {
+        let b: [u8; 4] = head.get(at..at + 4)?.try_into().ok()?;
+        usize::try_from(i32::from_le_bytes(b)).ok()
+    };
+    match int(0) {
+        Some(8 | 18 | 28) => int(36).unwrap_or(0),
+        Some(3 | 13 | 23) => int(40).unwrap_or(0),
+        Some(5 | 15 | 25) => int(40).unwrap_or(0).saturating_sub(int(36).unwrap_or(0)),
+        _ => 0,
+    }
 }
 
 /// The vertices of one record's content.
@@ -271,6 +307,27 @@ mod tests {
         let many: Vec<_> = (0..11).map(|k| point(k as f64, 0.0)).collect();
         let err = read(&shp(&many)[..], "t.shp", 10).unwrap_err().to_string();
         assert!(err.contains("record 11: more than 10 points"), "{err}");
+    }
+
+    #[test]
+    fn a_record_past_the_limit_is_refused_before_its_coordinates_are_read() {
+        // Issue 47, B1: a gzipped record of gigabytes was buffered whole before a point was
+        // counted (2.1 GB with --max-points 1000). A polygon announcing a million points in a
+        // record of that length, of which only the counts arrive: refused on its counts,
+        // not by the end of the file.
+        let mut c = polygon(&[[0.0, 0.0]]);
+        c[40..44].copy_from_slice(&1_000_000i32.to_le_bytes());
+        let mut bytes = shp(&[c]);
+        let words = ((44 + 4 + 16 * 1_000_000) / 2) as u32;
+        bytes[104..108].copy_from_slice(&words.to_be_bytes());
+        let err = read(&bytes[..], "t.shp", 10).unwrap_err().to_string();
+        assert_eq!(
+            err,
+            "t.shp: Shapefile record 1: more than 10 points (raise --max-points to read more)"
+        );
+        // A record within the limit is read as before.
+        let ring = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 0.0]];
+        assert_eq!(read(&shp(&[polygon(&ring)])[..], "t.shp", 4).unwrap().len(), 3);
     }
 
     #[test]
