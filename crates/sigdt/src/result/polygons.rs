@@ -11,8 +11,9 @@
 //! exact for any finite input.
 //!
 //! # Complexity
-//! O(k² + Σ |loop|) for `k` loops when bounding boxes separate them, O(k · Σ |loop|) at worst
-//! (loops nested in one another).
+//! O(k log k + Σ |loop|) for `k` loops when bounding boxes separate them (the boxes that may
+//! hold a loop are found through a hierarchy of boxes), O(k · Σ |loop|) at worst (loops
+//! nested in one another).
 use super::Reconstruction;
 use crate::delaunay::hygiene::Scaling;
 use crate::geometry::{orient2d, Point};
@@ -68,26 +69,115 @@ fn nest(points: &[Point], loops: &[Vec<usize>]) -> Vec<Polygon> {
     // Loop `i` is inside loop `j` when a vertex of `i` that is not on `j` is (the first
     // vertex, for the vertex-disjoint loops of a reconstruction).
     let inside = |i: usize, j: usize| {
-        let b = boxes[j];
-        let in_box = |[x, y]: Point| (b[0]..=b[2]).contains(&x) && (b[1]..=b[3]).contains(&y);
-        if i == j || loops[j].is_empty() || !loops[i].first().is_some_and(|&v| in_box(scaled[v])) {
+        if i == j || loops[j].is_empty() {
             return false;
         }
         let Some(&v) = loops[i].iter().find(|v| !loops[j].contains(v)) else { return false };
         in_ring(&scaled, &loops[j], scaled[v])
     };
-    let containers: Vec<Vec<usize>> =
-        (0..loops.len()).map(|i| (0..loops.len()).filter(|&j| inside(i, j)).collect()).collect();
+    // Only loops whose box holds the first vertex of `i` can hold `i`: found through a
+    // hierarchy of boxes, so that many separate loops (islands) cost O(k log k), not O(k²).
+    let tree = BoxTree::new(&boxes);
+    let mut containers: Vec<Vec<usize>> = vec![Vec::new(); loops.len()];
+    let mut candidates = Vec::new();
+    for (i, ring) in loops.iter().enumerate() {
+        let Some(&first) = ring.first() else { continue };
+        candidates.clear();
+        tree.containing(scaled[first], &mut candidates);
+        candidates.sort_unstable();
+        containers[i] = candidates.iter().copied().filter(|&j| inside(i, j)).collect();
+    }
     let depth: Vec<usize> = containers.iter().map(Vec::len).collect();
+    // A hole's shell is its container one level up.
+    let mut holes: Vec<Vec<usize>> = vec![Vec::new(); loops.len()];
+    for h in (0..loops.len()).filter(|&h| depth[h] % 2 == 1) {
+        if let Some(&shell) = containers[h].iter().find(|&&j| depth[j] + 1 == depth[h]) {
+            holes[shell].push(h);
+        }
+    }
     (0..loops.len())
         .filter(|&i| depth[i] % 2 == 0)
-        .map(|shell| Polygon {
-            shell,
-            holes: (0..loops.len())
-                .filter(|&h| depth[h] == depth[shell] + 1 && containers[h].contains(&shell))
-                .collect(),
-        })
+        .map(|shell| Polygon { shell, holes: std::mem::take(&mut holes[shell]) })
         .collect()
+}
+
+/// A bounding-volume hierarchy over boxes `[min x, min y, max x, max y]`: each node holds the
+/// box around its items, split at the median centre along its longer side. Built in
+/// O(k log k); finding the boxes that hold a point visits O(log k) nodes plus those whose
+/// box holds it.
+struct BoxTree<'a> {
+    boxes: &'a [[f64; 4]],
+    /// Item indices, ordered so that every node's items are a run of them.
+    order: Vec<usize>,
+    /// Nodes: the box around the run, the run, and the first child (the second follows the
+    /// first's subtree); leaves have no child.
+    nodes: Vec<Node>,
+}
+
+struct Node {
+    bounds: [f64; 4],
+    run: std::ops::Range<usize>,
+    children: Option<[usize; 2]>,
+}
+
+/// Items a leaf holds at most.
+const LEAF: usize = 8;
+
+impl<'a> BoxTree<'a> {
+    fn new(boxes: &'a [[f64; 4]]) -> BoxTree<'a> {
+        // Empty loops have an inverted box, which holds no point: left out.
+        let order: Vec<usize> = (0..boxes.len()).filter(|&i| boxes[i][0] <= boxes[i][2]).collect();
+        let mut tree = BoxTree { boxes, nodes: Vec::new(), order };
+        if !tree.order.is_empty() {
+            tree.build(0..tree.order.len());
+        }
+        tree
+    }
+
+    /// Adds the node of `run` and its subtree; its index.
+    fn build(&mut self, run: std::ops::Range<usize>) -> usize {
+        let bounds = self.order[run.clone()].iter().fold(
+            [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY],
+            |b, &i| {
+                let c = self.boxes[i];
+                [b[0].min(c[0]), b[1].min(c[1]), b[2].max(c[2]), b[3].max(c[3])]
+            },
+        );
+        let node = self.nodes.len();
+        self.nodes.push(Node { bounds, run: run.clone(), children: None });
+        if run.len() > LEAF {
+            let axis = usize::from(bounds[3] - bounds[1] > bounds[2] - bounds[0]);
+            let centre = |i: usize| self.boxes[i][axis] + self.boxes[i][axis + 2];
+            let mid = run.start + run.len() / 2;
+            // Ties broken by index, so that the tree does not depend on the sort's order.
+            let key = |&i: &usize| (centre(i), i);
+            self.order[run.clone()].select_nth_unstable_by(mid - run.start, |a, b| {
+                key(a).partial_cmp(&key(b)).unwrap_or(std::cmp::Ordering::Equal)
+            });
+            let left = self.build(run.start..mid);
+            let right = self.build(mid..run.end);
+            self.nodes[node].children = Some([left, right]);
+        }
+        node
+    }
+
+    /// Pushes onto `found` every item whose box holds `p` (closed boxes).
+    fn containing(&self, p: Point, found: &mut Vec<usize>) {
+        let holds = |b: &[f64; 4]| b[0] <= p[0] && p[0] <= b[2] && b[1] <= p[1] && p[1] <= b[3];
+        let mut stack = if self.nodes.is_empty() { vec![] } else { vec![0] };
+        while let Some(n) = stack.pop() {
+            let node = &self.nodes[n];
+            if !holds(&node.bounds) {
+                continue;
+            }
+            match node.children {
+                Some(children) => stack.extend(children),
+                None => found.extend(
+                    self.order[node.run.clone()].iter().filter(|&&i| holds(&self.boxes[i])),
+                ),
+            }
+        }
+    }
 }
 
 /// Whether `p` lies inside the closed ring through `ring` (even-odd rule). A crossing of the
@@ -133,6 +223,57 @@ mod tests {
                 Polygon { shell: 3, holes: vec![] },
             ]
         );
+    }
+
+    /// The grouping by definition: every pair of loops tested (O(k²)).
+    fn nest_by_every_pair(points: &[Point], loops: &[Vec<usize>]) -> Vec<Polygon> {
+        let inside = |i: usize, j: usize| i != j && in_ring(points, &loops[j], points[loops[i][0]]);
+        let containers: Vec<Vec<usize>> = (0..loops.len())
+            .map(|i| (0..loops.len()).filter(|&j| inside(i, j)).collect())
+            .collect();
+        let depth: Vec<usize> = containers.iter().map(Vec::len).collect();
+        (0..loops.len())
+            .filter(|&i| depth[i] % 2 == 0)
+            .map(|shell| Polygon {
+                shell,
+                holes: (0..loops.len())
+                    .filter(|&h| depth[h] == depth[shell] + 1 && containers[h].contains(&shell))
+                    .collect(),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn many_islands_group_as_every_pair_says() {
+        // Issue 47, S1: every loop was tested against every other, 16 s for 40,000 islands.
+        // A grid of islands, every third with a lake, every ninth lake with an islet, and two
+        // large rings around parts of the grid (one inside the other), in a shuffled order.
+        let mut rings: Vec<[Point; 4]> = Vec::new();
+        for k in 0..900 {
+            let (x, y) = ((k % 30) as f64 * 10.0, (k / 30) as f64 * 10.0);
+            rings.push(square(x, y, 8.0));
+            if k % 3 == 0 {
+                rings.push(square(x + 2.0, y + 2.0, 4.0));
+            }
+            if k % 9 == 0 {
+                rings.push(square(x + 3.0, y + 3.0, 2.0));
+            }
+        }
+        rings.push(square(-1.0, -1.0, 155.0));
+        rings.push(square(-2.0, -2.0, 157.0));
+        let mut order: Vec<usize> = (0..rings.len()).collect();
+        let mut rng = crate::samplers::Rng::new(7);
+        for i in (1..order.len()).rev() {
+            order.swap(i, (rng.uniform() * (i + 1) as f64) as usize % (i + 1));
+        }
+        let points: Vec<Point> = order.iter().flat_map(|&r| rings[r]).collect();
+        let loops: Vec<Vec<usize>> =
+            (0..rings.len()).map(|k| (4 * k..4 * k + 4).collect()).collect();
+        let polygons = nest(&points, &loops);
+        assert_eq!(polygons, nest_by_every_pair(&points, &loops));
+        // Shells: the outer ring (the inner one is its hole), every island (inside both rings
+        // at depth two) and every islet.
+        assert_eq!(polygons.len(), 1 + 900 + 100);
     }
 
     #[test]
