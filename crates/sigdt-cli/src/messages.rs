@@ -14,19 +14,9 @@ pub fn note(text: &str) {
     let _ = writeln!(io::stderr().lock(), "{text}");
 }
 
-/// The one-line message for `err`: its own text, then each cause whose text it does not
-/// already contain, all on one line.
-pub fn one_line(err: &anyhow::Error) -> String {
-    let mut text = err.to_string();
-    for cause in err.chain().skip(1) {
-        let cause = cause.to_string();
-        if !text.contains(&cause) {
-            text.push_str(": ");
-            text.push_str(&cause);
-        }
-    }
-    text.split_whitespace().collect::<Vec<_>>().join(" ")
-}
+/// The one-line message for an error: its own text, then each cause whose text it does not
+/// already contain, all on one line (the readers' errors are made the same way).
+pub use sigdt_io::one_line;
 
 /// A usage error that clap cannot express, such as a flag allowed only with some value of
 /// another: `main` has clap report it for `command`, with exit status 2.

@@ -72,14 +72,7 @@ impl FromStr for OutputFormat {
     type Err = sigdt::Error;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        let found = OutputFormat::ALL.iter().copied().find(|f| f.name() == s);
-        found.ok_or_else(|| {
-            let names: Vec<_> = OutputFormat::ALL.iter().map(|f| f.name()).collect();
-            sigdt::Error::InvalidOption(format!(
-                "unknown output format '{s}' (expected one of: {})",
-                names.join(", ")
-            ))
-        })
+        sigdt::internals::find_by_name(OutputFormat::ALL, OutputFormat::name, s, "output format")
     }
 }
 
