@@ -101,7 +101,7 @@ wheel-test: wheel build
 	  SIGDT_WHEEL_TEST=1 bin/python -m pytest -q -p no:cacheprovider -c $(abspath pyproject.toml) \
 	  --rootdir $(abspath .) $(abspath python/tests) --ignore $(abspath python/tests/test_viewer.py) \
 	  --ignore $(abspath python/tests/test_dask.py)
-	SIGDT_CLI=$(WHEEL_VENV)/bin/sigdt $(CARGO) test --locked --workspace --test cli -q
+	SIGDT_CLI=$(WHEEL_VENV)/bin/sigdt $(CARGO) test --locked --workspace --features sigdt/geo-types --test cli -q
 
 py-lint: $(VENV)/.installed
 	$(VENV)/bin/ruff check python
