@@ -261,3 +261,30 @@ fn a_geopackage_with_other_layers_is_not_replaced() {
     sigdt(&["reconstruct", arg(&input), "-o", arg(&ours)]).ok();
     sigdt(&["reconstruct", arg(&input), "-o", arg(&ours), "--method", "emst"]).expect(0);
 }
+
+#[test]
+fn a_feature_view_is_read() {
+    // Issue 47, M3: GeoPackage feature views (allowed by the format; GDAL writes them) were
+    // refused: a view has no rowid.
+    let dir = tempdir();
+    let copy = dir.path().join("v.gpkg");
+    fs::copy(gis("sigma_27700.gpkg"), &copy).unwrap();
+    let db = rusqlite::Connection::open(&copy).unwrap();
+    db.execute_batch(
+        "CREATE VIEW half AS SELECT fid, geom FROM points WHERE fid % 2 = 0;
+         INSERT INTO gpkg_contents (table_name, data_type, identifier, srs_id)
+             VALUES ('half', 'features', 'half', 27700);
+         INSERT INTO gpkg_geometry_columns (table_name, column_name, geometry_type_name, srs_id, z, m)
+             VALUES ('half', 'geom', 'POINT', 27700, 0, 0);",
+    )
+    .unwrap();
+    let even: i64 = db.query_row("SELECT count(*) FROM half", [], |row| row.get(0)).unwrap();
+    drop(db);
+    let run = sigdt(&["reconstruct", arg(&copy), "--layer", "half", "-v", "--format", "edges"]);
+    let stderr = run.expect(0).stderr.clone();
+    assert!(
+        stderr.contains(&format!("points:                    {even} (read as layer 'half'")),
+        "{stderr}"
+    );
+    assert!(stderr.contains("in EPSG:27700"), "{stderr}");
+}

@@ -84,18 +84,26 @@ pub fn read(path: &Path, name: &str, layer: Option<&str>, max: usize) -> Result<
         ),
         found => found.map_err(sql_error)?,
     };
-    let query = format!(
-        "SELECT {}, {} FROM {}",
-        identifier("rowid"),
-        identifier(&chosen.column),
-        identifier(&chosen.table)
-    );
+    // A feature view (the format allows them; GDAL writes them) has no rowid: its features
+    // are numbered from 1 in the order the view gives them.
+    let is_view: bool = db
+        .query_row(
+            "SELECT EXISTS (SELECT 1 FROM sqlite_master WHERE type = 'view' AND name = ?1)",
+            [&chosen.table],
+            |row| row.get(0),
+        )
+        .map_err(sql_error)?;
+    let fid = if is_view { "NULL".to_string() } else { identifier("rowid") };
+    let query =
+        format!("SELECT {fid}, {} FROM {}", identifier(&chosen.column), identifier(&chosen.table));
     let mut statement = db.prepare(&query).map_err(sql_error)?;
     let mut rows = statement.query([]).map_err(sql_error)?;
     let mut points = Vec::new();
     let table = quoted(&chosen.table);
+    let mut position = 0i64;
     while let Some(row) = rows.next().map_err(sql_error)? {
-        let fid: i64 = row.get(0).map_err(sql_error)?;
+        position += 1;
+        let fid: i64 = row.get::<_, Option<i64>>(0).map_err(sql_error)?.unwrap_or(position);
         let blob: Option<Vec<u8>> = row.get(1).map_err(|e| {
             anyhow!("{name}: layer {table}, feature {fid}: the geometry is not a blob ({e})")
         })?;
