@@ -77,13 +77,17 @@ Output formats (--format; default: from OUT's extension, else edges):
   loops    one closed loop per line, its indices in order; open paths as 'path i j ...'
                                                              (.loops)
   wkt      POLYGON / MULTIPOLYGON / LINESTRING of the loops and paths   (.wkt)
-  geojson  one Feature: the geometry, with status and counts as properties
+  geojson  one Feature: the geometry, with status and counts as properties; no
+           projected system (RFC 7946); longitude/latitude cut at the antimeridian
                                                              (.geojson .json)
   svg      a picture of the points, edges and filled loops   (.svg)
-  gpkg     GeoPackage layers 'curves' (polygons with holes, paths as lines; method,
-           status, warning, diagnosis) and 'left_out' (points, input row, reason), in
-           the input's coordinate system or --crs                 (.gpkg)
-  fgb      FlatGeobuf: the same curves and left-out points in one layer (kind)  (.fgb)";
+  gpkg     GeoPackage layers of one geometry type each, one feature per group (--by):
+           'areas' (multi-polygons), 'paths' (open lines), 'networks' (lines with an end
+           at a junction), each with method, status, warning, diagnosis, vertices; and
+           'left_out' (points, input row, reason); in the input's coordinate system or
+           --crs; longitude/latitude cut at the antimeridian            (.gpkg)
+  fgb      FlatGeobuf: the same layers, one file each: areas in OUT, the others in
+           STEM.paths.fgb, STEM.networks.fgb and STEM.left_out.fgb beside it  (.fgb)";
 
 /// Exit statuses, shown in `sigdt --help`.
 const EXIT_STATUS: &str = "\

@@ -1,5 +1,5 @@
 //! The output formats of `sigdt reconstruct`: the kernel's text formats, the SVG picture,
-//! and GIS layers (GeoPackage, FlatGeobuf).
+//! and GIS layers (GeoPackage, FlatGeobuf; written by [`gis_output`](crate::gis_output)).
 
 use std::fmt;
 use std::io::{self, Write};
@@ -7,9 +7,10 @@ use std::path::Path;
 use std::str::FromStr;
 
 use sigdt::{Method, Point, Reconstruction};
-use sigdt_io::text::{OutputFormat as Text, WriteOptions};
+use sigdt_io::text::{
+    write_reconstruction_lon_lat, write_reconstruction_with, OutputFormat as Text, WriteOptions,
+};
 
-use sigdt_io::gis::{fgb, gpkg, layers::Layers as GisLayers, Crs};
 use sigdt_lab::render::{render_svg, Layers, RenderOptions};
 
 /// An output format. Spelled `edges`, `loops`, `wkt`, `geojson`, `svg`, `png`, `gpkg` and
@@ -23,20 +24,22 @@ pub enum OutputFormat {
     Svg,
     /// The same picture as a PNG image.
     Png,
-    /// GeoPackage layers `curves` and `left_out` ([`Layers`]).
+    /// GeoPackage layers `areas`, `paths`, `networks` and `left_out`
+    /// ([`sigdt_io::gis::layers`]).
     GeoPackage,
-    /// FlatGeobuf: the same features in one layer.
+    /// FlatGeobuf: the same layers, one file each.
     FlatGeobuf,
 }
 
-/// What a result's GIS layers say beside its geometry: the method that made it and the
-/// coordinate system of its points.
+/// What the text formats say beside a result's geometry, and how they write it.
 #[derive(Debug, Clone, Copy)]
-pub struct Context<'a> {
+pub struct Context {
+    /// The method that made the result (GeoJSON's `method`).
     pub method: Method,
-    pub crs: Option<&'a Crs>,
     /// The EPSG code for GeoJSON's legacy `crs` member, when asked for.
     pub legacy_crs: Option<u32>,
+    /// Whether the points are longitude and latitude (GeoJSON is cut at the antimeridian).
+    pub lon_lat: bool,
 }
 
 impl OutputFormat {
@@ -63,6 +66,11 @@ impl OutputFormat {
         }
     }
 
+    /// Whether it is a GIS format, whose layers [`gis_output`](crate::gis_output) writes.
+    pub fn is_gis(self) -> bool {
+        matches!(self, OutputFormat::GeoPackage | OutputFormat::FlatGeobuf)
+    }
+
     /// The format implied by the file extension (case-insensitive): the kernel's text
     /// extensions, `.svg`, `.png`, `.gpkg` and `.fgb`; anything else is `None`.
     pub fn from_path(path: &Path) -> Option<OutputFormat> {
@@ -80,19 +88,23 @@ impl OutputFormat {
         }
     }
 
-    /// Writes `rec`, whose indices refer to `points`, to `w` in this format.
+    /// Writes `rec`, whose indices refer to `points`, to `w` in this format; the GIS formats
+    /// are layers, written by [`gis_output`](crate::gis_output), not to one stream.
     pub fn write(
         self,
         w: &mut dyn Write,
         points: &[Point],
         rec: &Reconstruction,
-        context: Context<'_>,
+        context: Context,
     ) -> io::Result<()> {
         match self {
             OutputFormat::Text(text) => {
                 let legacy_crs = context.legacy_crs.map(|c| format!("urn:ogc:def:crs:EPSG::{c}"));
                 let options = WriteOptions { method: Some(context.method), legacy_crs };
-                sigdt_io::text::write_reconstruction_with(w, text, points, rec, &options)
+                match context.lon_lat {
+                    true => write_reconstruction_lon_lat(w, text, points, rec, &options),
+                    false => write_reconstruction_with(w, text, points, rec, &options),
+                }
             }
             OutputFormat::Svg => w.write_all(picture(points, rec).as_bytes()),
             OutputFormat::Png => {
@@ -101,12 +113,7 @@ impl OutputFormat {
                 w.write_all(&bytes)
             }
             OutputFormat::GeoPackage | OutputFormat::FlatGeobuf => {
-                let layers = GisLayers::new(context.method, points, rec);
-                let bytes = match self {
-                    OutputFormat::GeoPackage => gpkg::write(&layers, context.crs),
-                    _ => fgb::write(&layers, context.crs),
-                };
-                w.write_all(&bytes.map_err(io::Error::other)?)
+                Err(io::Error::other(format!("{self}: layers, written by gis_output")))
             }
         }
     }
@@ -156,7 +163,7 @@ mod tests {
 
     fn text(format: OutputFormat, points: &[Point], rec: &Reconstruction) -> String {
         let mut out = Vec::new();
-        let context = Context { method: Method::SigConnect2d, crs: None, legacy_crs: None };
+        let context = Context { method: Method::SigConnect2d, legacy_crs: None, lon_lat: false };
         format.write(&mut out, points, rec, context).unwrap();
         String::from_utf8(out).unwrap()
     }

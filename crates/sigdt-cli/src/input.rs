@@ -60,11 +60,17 @@ impl Input {
 
     /// [`Input::points`], and how they were read (the format; a table's columns).
     pub fn points_and_how(&self, input: &Path) -> Result<Points> {
+        self.points_grouped(input, None)
+    }
+
+    /// [`Input::points_and_how`], grouped `by` an attribute column when given (`--by`).
+    pub fn points_grouped(&self, input: &Path, by: Option<&str>) -> Result<Points> {
         let options = ReadOptions {
             max_points: self.max_points,
             columns: self.columns.clone(),
             layer: self.layer.clone(),
             crs: self.crs.clone(),
+            by: by.map(str::to_string),
         };
         match is_dash(input) {
             true => sigdt_io::read_stream(io::stdin().lock(), "<stdin>", &options),

@@ -12,12 +12,15 @@
 //! Each subcommand has a file of its own in [`cmd`], holding its arguments beside the code
 //! that runs it. The commands share [`input`] (reading points and ground truth),
 //! [`messages`] (stderr), [`methods`] (the `--method` parser), [`labelled`] (labelled
-//! samples and their files), [`output`] and [`format`](mod@format); none of those imports a command.
+//! samples and their files), [`output`], [`format`](mod@format), [`gis_output`] and
+//! [`groups`] (`--by`); none of those imports a command.
 
 mod bench;
 mod cli;
 mod cmd;
 mod format;
+mod gis_output;
+mod groups;
 mod input;
 mod labelled;
 mod messages;

@@ -8,7 +8,10 @@
 //!   also gzip-compressed, and the GIS formats of [`gis`].
 //! - [`gis`]: GeoPackage, FlatGeobuf and Shapefile points in, GeoPackage and FlatGeobuf
 //!   layers out, the coordinate system carried from one to the other, and longitude and
-//!   latitude reconstructed in a local plane ([`reconstruct_in_plane`]).
+//!   latitude reconstructed in a local plane ([`reconstruct_in_plane`]) and cut at the
+//!   antimeridian.
+//! - [`attributes`]: points grouped by an attribute as they are read (`--by`), from a
+//!   GeoPackage layer, a Shapefile's `.dbf`, a FlatGeobuf file or a table.
 //!
 //! Every reader validates at the entry: it stops at `max_points` before it allocates for
 //! more, trusts no size a file announces before its bytes arrive, and names the file (and
@@ -28,6 +31,7 @@
 //!
 //! `examples/outlines.rs` writes the outlines of a GeoPackage's points as a GeoPackage in
 //! their coordinate system.
+pub mod attributes;
 pub mod gis;
 pub mod read;
 mod stream;
@@ -121,17 +125,20 @@ pub struct ReadOptions {
     /// The coordinate system of input that does not declare one (a declared one that
     /// differs is an error: sigdt does not transform coordinates).
     pub crs: Option<Crs>,
+    /// Group the points by this attribute column ([`attributes`]), from a GeoPackage layer,
+    /// a Shapefile's `.dbf`, a FlatGeobuf file's columns or a table's other columns.
+    pub by: Option<String>,
 }
 
 impl ReadOptions {
     /// At most `max_points` points, in the file's own columns, layer and system.
     pub fn at_most(max_points: usize) -> ReadOptions {
-        ReadOptions { max_points, columns: None, layer: None, crs: None }
+        ReadOptions { max_points, columns: None, layer: None, crs: None, by: None }
     }
 
     fn reading<'a>(&'a self, path: Option<&'a Path>) -> Reading<'a> {
         let (columns, layer) = (self.columns.as_ref(), self.layer.as_deref());
-        Reading { max_points: self.max_points, columns, layer, path }
+        Reading { max_points: self.max_points, columns, layer, path, by: self.by.as_deref() }
     }
 }
 

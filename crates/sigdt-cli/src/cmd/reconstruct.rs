@@ -6,13 +6,17 @@ use std::time::Instant;
 use anyhow::{bail, Result};
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::Args;
-use sigdt::{Expect, Method, Options, Reconstruction, Vertices};
+use sigdt::{Expect, Method, Options, Point, Reconstruction, Vertices};
+use sigdt_io::attributes::Grouping;
 use sigdt_io::text::OutputFormat as TextFormat;
+use sigdt_io::Crs;
 
 use crate::format::{Context, OutputFormat};
+use crate::gis_output::GisFiles;
 use crate::input::Input;
 use crate::messages::{note, UsageError};
 use crate::output::{is_dash, Output};
+use sigdt_io::gis::layers::Layers;
 use sigdt_io::gis::local::{reconstruct_in_plane, why_degrees};
 
 /// `sigdt reconstruct`.
@@ -42,6 +46,12 @@ pub struct ReconstructArgs {
     #[arg(long, value_name = "WHAT", default_value_t = Expect::default(),
           value_parser = |s: &str| s.parse::<Expect>().map_err(|e| e.to_string()))]
     pub expect: Expect,
+    /// Reconstruct the points in groups, by the value of this attribute column (a
+    /// GeoPackage layer's column, a Shapefile's .dbf field, a FlatGeobuf column, or a CSV
+    /// table's column), and write one feature per group per layer with the attributes that
+    /// are the same on all of a group's points (GeoPackage or FlatGeobuf output only).
+    #[arg(long, value_name = "COLUMN")]
+    pub by: Option<String>,
     /// GeoJSON output of points in a projected coordinate system: write them with the
     /// legacy 'crs' member of GeoJSON 2008 (which RFC 7946 removed; QGIS and GDAL still read
     /// it) instead of refusing.
@@ -54,6 +64,7 @@ pub struct ReconstructArgs {
 
 /// `sigdt reconstruct`.
 pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
+    // The output named is checked first: it must not be the input, whatever its format.
     let output = Output::new(args.output.as_deref(), &args.input)?;
     let format = match (args.format, args.output.as_deref().filter(|p| !is_dash(p))) {
         (Some(format), _) => format,
@@ -77,19 +88,22 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
             }
         },
     };
-    if let (OutputFormat::GeoPackage, Some(out)) = (format, args.output.as_deref()) {
-        // The GeoPackage is replaced whole: a user's other layers in it would be lost.
-        let foreign = sigdt_io::gis::gpkg::foreign_tables(out);
-        if !foreign.is_empty() {
-            let names: Vec<_> = foreign.iter().map(|t| sigdt_io::text::quoted(t)).collect();
-            bail!(
-                "{}: a GeoPackage holding other tables ({}); writing the result replaces it \
-                 whole: refusing (choose another file)",
-                out.display(),
-                names.join(", ")
-            );
+    if args.by.is_some() && !format.is_gis() {
+        return Err(UsageError {
+            command: "reconstruct",
+            kind: clap::error::ErrorKind::ArgumentConflict,
+            message: format!(
+                "--by: --format {format} holds one result, not one per group: write GIS layers \
+                 (-o NAME.gpkg or NAME.fgb, or --format gpkg)"
+            ),
         }
+        .into());
     }
+    // Every file is checked before any work is done.
+    let destination = match format.is_gis() {
+        true => Destination::Gis(GisFiles::new(format, args.output.as_deref(), &args.input)?),
+        false => Destination::One(output),
+    };
     if args.no_leaf_elimination && args.method != Method::SigConnect2d {
         // Dropping the flag without a word would hide that another method ran than the one
         // meant (SIG-CONNECT2D was the default before SIG-AUTO).
@@ -104,7 +118,7 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         }
         .into());
     }
-    let read = input.points_and_how(&args.input)?;
+    let read = input.points_grouped(&args.input, args.by.as_deref())?;
     let (mut points, read_as, crs) = (read.points, read.how, read.crs);
     if let (OutputFormat::Text(TextFormat::GeoJson), Some(crs)) = (format, &crs) {
         if args.geojson_legacy_crs && crs.epsg.is_none() {
@@ -131,6 +145,18 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         expect: args.expect,
     };
     let degrees = why_degrees(crs.as_ref(), read.lon_lat);
+    let read_as = match (&crs, &degrees) {
+        (_, Some(why)) => format!(
+            "{read_as}; {why}: reconstructed in an azimuthal equidistant plane centred on \
+             the points, written in degrees"
+        ),
+        (Some(crs), None) => format!("{read_as}; in {crs}"),
+        (None, None) => read_as,
+    };
+    if let (Some(grouping), Destination::Gis(files)) = (read.grouping, &destination) {
+        return by_groups(args, &options, points, grouping, degrees.as_deref(), &read_as)
+            .and_then(|layers| write_layers(files, &layers, crs.as_ref(), args.verbose));
+    }
     let start = Instant::now();
     // Edges and loops are indices: the points can go once triangulated (less peak memory).
     let indices_only = matches!(format, OutputFormat::Text(TextFormat::Edges | TextFormat::Loops));
@@ -149,20 +175,90 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         );
     }
     if args.verbose {
-        let read_as = match (&crs, &degrees) {
-            (_, Some(why)) => format!(
-                "{read_as}; {why}: reconstructed in an azimuthal equidistant plane centred on \
-                 the points, written in degrees"
-            ),
-            (Some(crs), None) => format!("{read_as}; in {crs}"),
-            (None, None) => read_as,
-        };
         summary(&options, &rec, elapsed, &read_as);
     }
     warnings(&rec);
-    let legacy_crs = crs.as_ref().filter(|_| args.geojson_legacy_crs).and_then(|c| c.epsg);
-    let context = Context { method: args.method, crs: crs.as_ref(), legacy_crs };
-    output.write(|w| format.write(w, &points, &rec, context))
+    let lon_lat = degrees.is_some();
+    match destination {
+        Destination::Gis(files) => {
+            let layers = Layers::new(args.method, &points, &rec, lon_lat);
+            write_layers(&files, &layers, crs.as_ref(), args.verbose)
+        }
+        Destination::One(output) => {
+            let legacy_crs = crs.as_ref().filter(|_| args.geojson_legacy_crs).and_then(|c| c.epsg);
+            let context = Context { method: args.method, legacy_crs, lon_lat };
+            output.write(|w| format.write(w, &points, &rec, context))
+        }
+    }
+}
+
+/// Writes `layers` to `files` in the system `crs`, saying which files under `--verbose`.
+fn write_layers(files: &GisFiles, layers: &Layers, crs: Option<&Crs>, verbose: bool) -> Result<()> {
+    let written = files.write(layers, crs)?;
+    if verbose {
+        note(&written.join("\n"));
+    }
+    Ok(())
+}
+
+/// Reconstructs the `points` of each group of `grouping` (`--by`) and returns their layers,
+/// with a warning line for the groups without a curve and for those that warn, and the
+/// `--verbose` summary (`read_as` saying how the points were read).
+fn by_groups(
+    args: &ReconstructArgs,
+    options: &Options,
+    points: Vec<Point>,
+    grouping: Grouping,
+    degrees: Option<&str>,
+    read_as: &str,
+) -> Result<Layers> {
+    let start = Instant::now();
+    let count = grouping.groups.len();
+    let by = grouping.columns[grouping.by].name.clone();
+    let groups = crate::groups::reconstruct(&points, grouping, options, degrees);
+    let elapsed = start.elapsed().as_secs_f64() * 1e3;
+    if args.verbose {
+        let statuses: Vec<String> =
+            groups.statuses.iter().map(|(s, k)| format!("{s} {k}")).collect();
+        let left_out: usize = groups.left_out.values().sum();
+        let lines = [
+            format!("method:                    {}", options.method),
+            format!("points:                    {} (read as {read_as})", points.len()),
+            format!("groups:                    {count} by {}", sigdt_io::text::quoted(&by)),
+            format!("statuses:                  {}", statuses.join(", ")),
+            format!("without curves:            {}", groups.without_curves.len()),
+            format!("left out:                  {left_out}"),
+            format!("time:                      {elapsed:.3} ms"),
+        ];
+        note(&lines.join("\n"));
+    }
+    if !groups.without_curves.is_empty() {
+        let named = groups.without_curves.iter().map(|(name, why)| format!("{name} ({why})"));
+        note(&format!(
+            "sigdt: warning: {} of {count} groups gave no curve (their areas features, without \
+             geometry, say why): {}",
+            groups.without_curves.len(),
+            crate::groups::listed(named)
+        ));
+    }
+    if !groups.warned.is_empty() {
+        note(&format!(
+            "sigdt: warning: {} of {count} groups may not be their points' curves (see their \
+             warning and diagnosis): {}",
+            groups.warned.len(),
+            crate::groups::listed(groups.warned.iter().cloned())
+        ));
+    }
+    for (reason, k) in &groups.left_out {
+        note(&format!("sigdt: left out {k} point(s): {reason}"));
+    }
+    Ok(groups.layers)
+}
+
+/// Where a result goes: one stream or file, or the files of GIS layers.
+enum Destination {
+    One(Output),
+    Gis(GisFiles),
 }
 
 /// `--format` values, listed in the help and checked by clap.

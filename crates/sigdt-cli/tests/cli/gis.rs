@@ -63,7 +63,7 @@ fn geopackage_and_flatgeobuf_output_keep_the_coordinate_system() {
         // Read back by sigdt: the curve's 245 vertices, in EPSG:27700.
         let args = ["reconstruct", out, "-v", "-o", "again.edges"];
         let args: Vec<&str> = match out.ends_with("gpkg") {
-            true => args.iter().copied().chain(["--layer", "curves"]).collect(),
+            true => args.iter().copied().chain(["--layer", "areas"]).collect(),
             false => args.to_vec(),
         };
         let run = sigdt_in(dir.path(), &args, None);
@@ -75,7 +75,7 @@ fn geopackage_and_flatgeobuf_output_keep_the_coordinate_system() {
     let glyph = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data/inputs/glyph_sigma.xy");
     let args = ["reconstruct", arg(&glyph), "--crs", "EPSG:3857", "-o", "c.gpkg"];
     sigdt_in(dir.path(), &args, None).ok();
-    let run = sigdt_in(dir.path(), &["reconstruct", "c.gpkg", "--layer", "curves", "-v"], None);
+    let run = sigdt_in(dir.path(), &["reconstruct", "c.gpkg", "--layer", "areas", "-v"], None);
     assert!(run.expect(0).stderr.contains("in EPSG:3857"), "{run}");
     sigdt(&["reconstruct", arg(&gis("sigma_27700.gpkg")), "--crs", "EPSG:4326"])
         .error(&["is in EPSG:27700, but --crs says EPSG:4326: sigdt does not transform"]);
@@ -184,7 +184,7 @@ fn a_geojson_crs_member_is_carried_like_a_geopackages() {
     fs::write(dir.path().join("pts.geojson"), geojson).unwrap();
     let run = sigdt_in(dir.path(), &["reconstruct", "pts.geojson", "-v", "-o", "o.gpkg"], None);
     assert!(run.expect(0).stderr.contains("GeoJSON; in EPSG:27700"), "{run}");
-    let back = sigdt_in(dir.path(), &["reconstruct", "o.gpkg", "--layer", "curves", "-v"], None);
+    let back = sigdt_in(dir.path(), &["reconstruct", "o.gpkg", "--layer", "areas", "-v"], None);
     assert!(back.expect(0).stderr.contains("in EPSG:27700"), "{back}");
     sigdt_in(dir.path(), &["reconstruct", "pts.geojson", "--format", "geojson"], None)
         .error(&["is in EPSG:27700, but GeoJSON is longitude/latitude"]);
@@ -222,9 +222,9 @@ fn sigdts_own_geopackage_reads_back_by_its_layers_not_the_empty_one() {
     let square = write_points(dir.path(), "square.xy", &circle(24, 10.0));
     sigdt_in(dir.path(), &["reconstruct", arg(&square), "-o", "o.gpkg"], None).ok();
     sigdt_in(dir.path(), &["reconstruct", "o.gpkg"], None)
-        .error(&["its only point layer, 'left_out', is empty; choose one of its 2 feature layers"]);
-    let run = sigdt_in(dir.path(), &["reconstruct", "o.gpkg", "--layer", "curves", "-v"], None);
-    assert!(run.expect(0).stderr.contains("layer 'curves'"), "{run}");
+        .error(&["its only point layer, 'left_out', is empty; choose one of its 4 feature layers"]);
+    let run = sigdt_in(dir.path(), &["reconstruct", "o.gpkg", "--layer", "areas", "-v"], None);
+    assert!(run.expect(0).stderr.contains("layer 'areas'"), "{run}");
 }
 
 #[test]

@@ -23,6 +23,7 @@ mod errors;
 mod files;
 mod formats;
 mod gis;
+mod groups;
 mod limits;
 mod pictures;
 mod results;

@@ -10,7 +10,9 @@
 //! itself are projected back.
 
 use anyhow::{bail, Result};
-use sigdt::{Options, Point, Reconstruction, Vertices};
+use std::collections::HashMap;
+
+use sigdt::{LeftOut, LeftOutReason, Options, Point, Reconstruction, Vertices};
 
 use super::Crs;
 
@@ -75,16 +77,39 @@ impl LocalProjection {
         Ok(projection)
     }
 
+    /// How far `lon` (degrees, in [-180, 360] as `fit` checks) lies east of the centre, in
+    /// radians within [-π, π]. One meridian's spellings (+180 and -180, 10 and 370) are first
+    /// made one number, exactly (`lon - 360` is exact for `lon` in [180, 360], Sterbenz), so
+    /// a ±180 copy of a point is an exact duplicate, not a point 10⁻⁹ m away; the
+    /// antimeridian is recognised up to rounding ([`seam::ROUNDING`](super::seam::ROUNDING)).
+    fn east_of_centre(&self, lon: f64) -> f64 {
+        // The antimeridian up to rounding is -180 exactly.
+        let lon = if super::seam::on_meridian(lon) { -180.0 } else { lon };
+        let lon = if lon >= 180.0 { lon - 360.0 } else { lon };
+        let d = lon - self.lon0.to_degrees();
+        let d = if d > 180.0 {
+            d - 360.0
+        } else if d < -180.0 {
+            d + 360.0
+        } else {
+            d
+        };
+        d.to_radians()
+    }
+
     /// The angle at the Earth's centre between the projection's centre and `p`.
     fn angle(&self, [lon, lat]: Point) -> f64 {
-        let (lat, dlon) = (lat.to_radians(), lon.to_radians() - self.lon0);
+        let (lat, dlon) = (lat.to_radians(), self.east_of_centre(lon));
         let cos_c = self.sin0 * lat.sin() + self.cos0 * lat.cos() * dlon.cos();
         cos_c.clamp(-1.0, 1.0).acos()
     }
 
     /// `p` (longitude, latitude in degrees) in metres east and north of the centre.
     pub fn forward(&self, p: Point) -> Point {
-        let (lat, dlon) = (p[1].to_radians(), p[0].to_radians() - self.lon0);
+        // A pole is one place whatever its longitude (Antarctica's outline runs along
+        // -90° from 180° to -180°): one spelling, so that its copies are exact duplicates.
+        let p = if p[1].abs() == 90.0 { [0.0, p[1]] } else { p };
+        let (lat, dlon) = (p[1].to_radians(), self.east_of_centre(p[0]));
         let c = self.angle(p);
         // c / sin c, which tends to 1 at the centre.
         let k = if c < 1e-8 { 1.0 } else { c / c.sin() };
@@ -112,7 +137,9 @@ impl LocalProjection {
 
 /// Reconstructs the longitude/latitude `points` in their local plane (refused as
 /// [`LocalProjection::fit`] refuses, `what` saying why they are degrees); vertices a method
-/// places itself come back in degrees. The indices refer to `points`, as always.
+/// places itself come back in degrees, and so do the places the findings name. The indices
+/// refer to `points`, as always. Points between the ends of a cut at the antimeridian
+/// (the module `seam`) are left out as [`LeftOutReason::Seam`].
 pub fn reconstruct_in_plane(
     points: &[Point],
     options: &Options,
@@ -120,10 +147,61 @@ pub fn reconstruct_in_plane(
 ) -> Result<Reconstruction> {
     let plane = LocalProjection::fit(points, what)?;
     let projected: Vec<Point> = points.iter().map(|&p| plane.forward(p)).collect();
-    let mut rec = sigdt::reconstruct_owned(projected, options)?;
+    let seam = super::seam::between_cut_ends(points, &projected);
+    let mut rec = if seam.is_empty() {
+        sigdt::reconstruct_owned(projected, options)?
+    } else {
+        without_seam(&projected, &seam, options)?
+    };
     if let Vertices::Moved(placed) | Vertices::New(placed) = &mut rec.vertices {
         placed.iter_mut().for_each(|p| *p = plane.inverse(*p));
     }
+    for finding in &mut rec.diagnosis {
+        finding.point = points[finding.at];
+    }
+    Ok(rec)
+}
+
+/// The reconstruction of `projected` but the points `seam` (sorted), left out as
+/// [`LeftOutReason::Seam`]: the others reconstructed alone, their indices lifted back.
+fn without_seam(projected: &[Point], seam: &[usize], options: &Options) -> Result<Reconstruction> {
+    let mut on_seam = vec![false; projected.len()];
+    seam.iter().for_each(|&i| on_seam[i] = true);
+    let kept: Vec<usize> = (0..projected.len()).filter(|&i| !on_seam[i]).collect();
+    let mut rec = sigdt::reconstruct_owned(kept.iter().map(|&i| projected[i]).collect(), options)?;
+    // `kept` increases, so lifting keeps every order the result promises (sorted edges,
+    // loops starting at their smallest index).
+    let lift = |i: &mut usize| *i = kept[*i];
+    if !matches!(rec.vertices, Vertices::New(_)) {
+        rec.edges.iter_mut().flatten().for_each(lift);
+        rec.loops.iter_mut().flatten().for_each(lift);
+        rec.paths.iter_mut().flatten().for_each(lift);
+    }
+    if let Vertices::Moved(moved) = &mut rec.vertices {
+        let mut all = projected.to_vec();
+        kept.iter().zip(moved.iter()).for_each(|(&i, &p)| all[i] = p);
+        *moved = all;
+    }
+    rec.duplicates.iter_mut().flatten().for_each(lift);
+    rec.left_out.iter_mut().for_each(|l| lift(&mut l.index));
+    rec.diagnosis.iter_mut().for_each(|f| lift(&mut f.at));
+    // A seam point's copy at the other spelling projects to the same point: a duplicate of
+    // the first, as the kernel lists duplicates.
+    let mut first: HashMap<[u64; 2], usize> = HashMap::new();
+    for &i in seam {
+        let key = projected[i].map(f64::to_bits);
+        match first.get(&key) {
+            Some(&representative) => rec.duplicates.push([i, representative]),
+            None => {
+                first.insert(key, i);
+                rec.left_out.push(LeftOut { index: i, reason: LeftOutReason::Seam });
+            }
+        }
+    }
+    rec.duplicates.sort_unstable();
+    rec.left_out.sort_unstable_by_key(|l| l.index);
+    rec.stats.points = projected.len();
+    rec.stats.distinct_points += first.len();
     Ok(rec)
 }
 
@@ -158,6 +236,28 @@ mod tests {
         }
         // Across the antimeridian the centre is between the points, not at 0°.
         assert!(p.forward(points[0])[0].abs() < 20_000.0);
+    }
+
+    #[test]
+    fn a_meridian_or_a_pole_spelled_twice_projects_to_one_point() {
+        let points = [[179.5, -16.0], [180.0, -16.5], [-180.0, -16.5], [-179.5, -17.0]];
+        for centre in [&points[..], &[[10.0, 0.0]][..], &[[-179.9, 80.0]][..]] {
+            let p = LocalProjection::fit(centre, "test").unwrap();
+            assert_eq!(p.forward([180.0, -16.5]), p.forward([-180.0, -16.5]));
+            assert_eq!(p.forward([10.0, 5.0]), p.forward([370.0, 5.0]));
+            assert_eq!(p.forward([-180.0, -90.0]), p.forward([56.3, -90.0]));
+        }
+        // So the copy is an exact duplicate of the reconstruction, not a second point.
+        let mut ring: Vec<Point> = (0..24)
+            .map(|k| k as f64 * std::f64::consts::TAU / 24.0)
+            .map(|t| [180.0 + 0.5 * t.cos(), -16.5 + 0.5 * t.sin()])
+            .map(|[x, y]| [if x > 180.0 { x - 360.0 } else { x }, y])
+            .collect();
+        ring.push([-180.0, -16.0]); // point 6 is [180, -16]
+        let rec = reconstruct_in_plane(&ring, &Options::default(), "test").unwrap();
+        assert_eq!(ring[6], [180.0, -16.0]);
+        assert_eq!(rec.duplicates, vec![[24, 6]]);
+        assert_eq!(rec.loops.len(), 1);
     }
 
     #[test]

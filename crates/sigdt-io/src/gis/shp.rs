@@ -13,12 +13,24 @@ use anyhow::{anyhow, bail, Result};
 use sigdt::Point;
 
 use super::crs::Crs;
+pub use super::dbf::Dbf;
 
 /// The file code that opens every `.shp` (big-endian 9994).
 pub const MAGIC: &[u8] = &[0x00, 0x00, 0x27, 0x0a];
 
 /// The vertices of the Shapefile stream `reader` (`name` in messages), at most `max`.
-pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<Vec<Point>> {
+pub fn read(reader: impl Read, name: &str, max: usize) -> Result<Vec<Point>> {
+    read_each(reader, name, max, |_| Ok(()))
+}
+
+/// [`read`], calling `record_read` with the number of points of each record once it is read
+/// (a null shape's 0 included), in record order.
+pub fn read_each(
+    mut reader: impl Read,
+    name: &str,
+    max: usize,
+    mut record_read: impl FnMut(usize) -> Result<()>,
+) -> Result<Vec<Point>> {
     let mut header = [0u8; 100];
     reader
         .read_exact(&mut header)
@@ -62,8 +74,10 @@ pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<Vec<Point>>
         if (got as u64) < bytes {
             bail!("{name}: Shapefile: the file ends inside record {number}");
         }
+        let before = points.len();
         record(&content, &mut points, max)
             .map_err(|why| anyhow!("{name}: Shapefile record {number}: {why}"))?;
+        record_read(points.len() - before)?;
     }
     Ok(points)
 }

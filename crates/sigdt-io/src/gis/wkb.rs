@@ -1,5 +1,5 @@
 //! Well-known binary (OGC 06-103r4 §8, ISO 13249-3), the geometry encoding of GeoPackage:
-//! read for the vertices of any geometry, written for the curves of a result.
+//! read for the vertices of any geometry, written for the layers of a result.
 //!
 //! Reading accepts both byte orders, the ISO Z/M/ZM type codes (1001, 2001, 3001, ...) and
 //! the extended-WKB flags (Z, M and SRID bits), as GDAL and PostGIS write them; Z and M
@@ -175,6 +175,21 @@ impl Writer {
         self.coordinates(path.iter().copied());
     }
 
+    /// A multi-polygon of `polygons` (each as [`Writer::polygon`] takes it); empty when
+    /// there are none.
+    pub fn multi_polygon(&mut self, polygons: &[Vec<Vec<Point>>]) {
+        self.header(6);
+        self.count(polygons.len());
+        polygons.iter().for_each(|rings| self.polygon(rings));
+    }
+
+    /// A multi-line string of `lines`.
+    pub fn multi_line_string(&mut self, lines: &[Vec<Point>]) {
+        self.header(5);
+        self.count(lines.len());
+        lines.iter().for_each(|line| self.line_string(line));
+    }
+
     /// A polygon of `rings` (the shell, then its holes), each closed here by repeating its
     /// first point.
     pub fn polygon(&mut self, rings: &[Vec<Point>]) {
@@ -208,6 +223,15 @@ mod tests {
         let mut w = Writer(Vec::new());
         w.point([2.5, -1.0]);
         assert_eq!(read(&w.0).unwrap(), vec![[2.5, -1.0]]);
+        let mut w = Writer(Vec::new());
+        w.multi_polygon(&[vec![ring.clone()], vec![ring.clone()]]);
+        assert_eq!(read(&w.0).unwrap(), [ring.clone(), ring.clone()].concat());
+        let mut w = Writer(Vec::new());
+        w.multi_line_string(&[ring.clone(), ring.clone()]);
+        assert_eq!(read(&w.0).unwrap(), [ring.clone(), ring.clone()].concat());
+        let mut w = Writer(Vec::new());
+        w.multi_polygon(&[]);
+        assert_eq!(w.0, [1, 6, 0, 0, 0, 0, 0, 0, 0], "an empty multi-polygon");
     }
 
     #[test]

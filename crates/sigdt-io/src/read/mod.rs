@@ -27,9 +27,10 @@ use std::io::{BufRead, BufReader, Read};
 use std::path::Path;
 
 use crate::text::PointFormat;
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use sigdt::Point;
 
+use crate::attributes::Grouping;
 use crate::gis::{fgb, gpkg, shp, Crs};
 use crate::Misuse;
 
@@ -48,12 +49,14 @@ pub struct Reading<'a> {
     pub layer: Option<&'a str>,
     /// The file read, when it is one (not standard input, not inside gzip).
     pub path: Option<&'a Path>,
+    /// `--by`: group the points by this attribute column.
+    pub by: Option<&'a str>,
 }
 
 impl Reading<'_> {
-    /// At most `max_points` points, no columns, no layer, no path.
+    /// At most `max_points` points, no columns, no layer, no path, no grouping.
     pub fn at_most(max_points: usize) -> Reading<'static> {
-        Reading { max_points, columns: None, layer: None, path: None }
+        Reading { max_points, columns: None, layer: None, path: None, by: None }
     }
 }
 
@@ -70,6 +73,8 @@ pub struct Points {
     pub crs: Option<Crs>,
     /// Whether a table's columns read are named longitude and latitude.
     pub lon_lat: bool,
+    /// The points grouped by an attribute (`--by`), when asked.
+    pub grouping: Option<Grouping>,
 }
 
 /// The points of `reader`, named `name` in errors (a path or `<stdin>`); see the module docs.
@@ -129,6 +134,7 @@ fn uncompressed<R: BufRead>(
         how: how.to_string(),
         crs: None,
         lon_lat: false,
+        grouping: None,
     };
     let kind = match format {
         Format::Table | Format::Kernel(PointFormat::Plain) => "a table",
@@ -144,18 +150,34 @@ fn uncompressed<R: BufRead>(
     if how.layer.is_some() && format != Format::GeoPackage {
         return Err(conflict(format!("--layer: {shown} is {kind}, which has no layers to choose")));
     }
-    if let Some(columns) = how.columns {
-        if !matches!(format, Format::Table | Format::Kernel(PointFormat::Plain)) {
+    let with_attributes = matches!(
+        format,
+        Format::GeoPackage
+            | Format::FlatGeobuf
+            | Format::Shapefile
+            | Format::Table
+            | Format::Kernel(PointFormat::Plain)
+    );
+    if how.by.is_some() && !with_attributes {
+        return Err(conflict(format!(
+            "--by: {shown} is {kind}, which has no attributes to group by (GeoPackage, \
+             Shapefile, FlatGeobuf and CSV tables have)"
+        )));
+    }
+    let as_table = matches!(format, Format::Table | Format::Kernel(PointFormat::Plain));
+    if how.columns.is_some() || (how.by.is_some() && as_table) {
+        if !as_table {
             return Err(conflict(format!(
                 "--columns: {shown} is {kind}, which has no columns to choose"
             )));
         }
-        let table = table::read(reader, shown, Some(columns), max)?;
+        let table = table::read_grouped(reader, shown, how.columns, max, how.by)?;
         return Ok(Points {
             points: table.points,
             how: table.how,
             crs: None,
             lon_lat: table.lon_lat,
+            grouping: table.grouping,
         });
     }
     Ok(match format {
@@ -166,16 +188,32 @@ fn uncompressed<R: BufRead>(
                      input, not gzip-compressed)"
                 );
             };
-            let read = gpkg::read(path, shown, how.layer, max)?;
+            let read = gpkg::read_grouped(path, shown, how.layer, max, how.by)?;
             let how = format!("layer {} of a GeoPackage", crate::text::quoted(&read.layer));
-            Points { points: read.points, how, crs: read.crs, lon_lat: false }
+            Points {
+                points: read.points,
+                how,
+                crs: read.crs,
+                lon_lat: false,
+                grouping: read.grouping,
+            }
         }
         Format::FlatGeobuf => {
-            let read = fgb::read(reader, shown, max)?;
-            Points { points: read.points, how: "FlatGeobuf".into(), crs: read.crs, lon_lat: false }
+            let read = fgb::read_grouped(reader, shown, max, how.by)?;
+            let how = "FlatGeobuf".to_string();
+            Points {
+                points: read.points,
+                how,
+                crs: read.crs,
+                lon_lat: false,
+                grouping: read.grouping,
+            }
         }
         Format::Shapefile => {
-            let points = shp::read(reader, shown, max)?;
+            let (points, grouping) = match how.by {
+                None => (shp::read(reader, shown, max)?, None),
+                Some(by) => shapefile_grouped(reader, shown, max, beside, by)?,
+            };
             let crs = match beside {
                 Some(path) => shp::projection(path)?,
                 None => None,
@@ -184,7 +222,7 @@ fn uncompressed<R: BufRead>(
                 Some(_) => "a Shapefile (its .prj read)",
                 None => "a Shapefile (no .prj beside it: coordinate system unknown)",
             };
-            Points { points, how: how.into(), crs, lon_lat: false }
+            Points { points, how: how.into(), crs, lon_lat: false, grouping }
         }
         Format::Npy => done(npy::read(reader, shown, max)?, "a NumPy array"),
         Format::Wkt => done(wkt::read(reader, shown, max)?, "WKT"),
@@ -204,11 +242,12 @@ fn uncompressed<R: BufRead>(
                     })
                 })
                 .transpose()?;
-            Points { points, how: "GeoJSON".into(), crs, lon_lat: false }
+            Points { points, how: "GeoJSON".into(), crs, lon_lat: false, grouping: None }
         }
         Format::Table => {
             let table = table::read(reader, shown, None, max)?;
-            Points { points: table.points, how: table.how, crs: None, lon_lat: table.lon_lat }
+            let (how, lon_lat) = (table.how, table.lon_lat);
+            Points { points: table.points, how, crs: None, lon_lat, grouping: None }
         }
         Format::Kernel(format) => {
             let points = crate::text::parse_points_at_most(reader, shown, Some(format), max)?;
@@ -216,6 +255,28 @@ fn uncompressed<R: BufRead>(
             done(points, how)
         }
     })
+}
+
+/// The points of a Shapefile grouped `by` a field of the `.dbf` beside `beside` (the `.shp`
+/// without `.gz`): record `k` of the one gives the attributes of the points of record `k`
+/// of the other.
+fn shapefile_grouped(
+    reader: impl BufRead,
+    shown: &str,
+    max: usize,
+    beside: Option<&Path>,
+    by: &str,
+) -> Result<(Vec<Point>, Option<Grouping>)> {
+    let table = beside.map(shp::Dbf::beside).transpose()?.flatten();
+    let Some(mut table) = table else {
+        bail!("{shown}: --by: no .dbf beside the Shapefile, so its records have no attributes");
+    };
+    let mut grouping = Grouping::new(table.columns(), by, table.name()).map_err(|m| anyhow!(m))?;
+    let points = shp::read_each(reader, shown, max, |n| {
+        grouping.add(table.next_record()?, n);
+        Ok(())
+    })?;
+    Ok((points, Some(grouping)))
 }
 
 /// The format of a stream that starts with `head`, named `inner` (without `.gz`); see the

@@ -26,6 +26,7 @@
 use std::io::BufRead;
 use std::str::FromStr;
 
+use crate::attributes::{Column as AttributeColumn, ColumnType, Grouping, Value};
 use crate::text::{max_lines, quoted, too_many_lines, MAX_LINE};
 use anyhow::{anyhow, Result};
 use sigdt::Point;
@@ -106,6 +107,8 @@ pub struct Table {
     pub how: String,
     /// Whether the columns read are named longitude and latitude (`lon`, `lat`, ...).
     pub lon_lat: bool,
+    /// The points grouped by a column (`--by`), each row's other columns its attributes.
+    pub grouping: Option<Grouping>,
 }
 
 /// Whether header names `x` and `y` are a longitude and a latitude.
@@ -122,9 +125,25 @@ pub fn read(
     columns: Option<&Columns>,
     max_points: usize,
 ) -> Result<Table> {
+    read_grouped(reader, name, columns, max_points, None)
+}
+
+/// [`read`], the points grouped `by` a column of the header (`--by`) when given: every
+/// column but x and y is an attribute, its text as written (an empty field: no value).
+pub fn read_grouped(
+    reader: impl BufRead,
+    name: &str,
+    columns: Option<&Columns>,
+    max_points: usize,
+    by: Option<&str>,
+) -> Result<Table> {
     let mut records = Records::new(reader, name, max_lines(max_points));
     let Some((first_line, first)) = records.next()? else {
-        return Ok(Table { points: Vec::new(), how: "an empty table".to_string(), lon_lat: false });
+        if by.is_some() {
+            return Err(anyhow!("{name}: --by: an empty table has no columns"));
+        }
+        let how = "an empty table".to_string();
+        return Ok(Table { points: Vec::new(), how, lon_lat: false, grouping: None });
     };
     let first = first.to_string();
     let separator = [';', '\t', ','].into_iter().find(|&c| first.contains(c));
@@ -139,6 +158,19 @@ pub fn read(
         None => (c + 1).to_string(),
     };
     let label = |c: usize| format!("column {}", named(c));
+    let mut grouping = match (by, &header) {
+        (None, _) => None,
+        (Some(_), None) => {
+            return Err(anyhow!("{name}: --by: the table has no header row to name its columns"))
+        }
+        (Some(by), Some(header)) => {
+            let others = header.iter().enumerate().filter(|&(c, _)| c != cx && c != cy);
+            let columns = others
+                .map(|(_, h)| AttributeColumn { name: h.clone(), kind: ColumnType::Text })
+                .collect();
+            Some(Grouping::new(columns, by, name).map_err(|m| anyhow!(m))?)
+        }
+    };
     let mut points = Vec::new();
     let mut add = |line: usize, text: &str| -> Result<()> {
         let fields = split(text).map_err(|m| anyhow!("{name}:{line}: {m}"))?;
@@ -153,6 +185,16 @@ pub fn read(
             return Err(super::too_many(name, max_points));
         }
         points.push(point);
+        if let Some(grouping) = &mut grouping {
+            let values = (0..first_fields.len())
+                .filter(|&c| c != cx && c != cy)
+                .map(|c| match fields.get(c).filter(|f| !f.is_empty()) {
+                    Some(field) => Value::Text(field.clone()),
+                    None => Value::Null,
+                })
+                .collect();
+            grouping.add(values, 1);
+        }
         Ok(())
     };
     if !is_header {
@@ -164,7 +206,7 @@ pub fn read(
     let skipped = if is_header { " (the header row skipped)" } else { "" };
     let how = format!("columns {} and {} of a table{skipped}", named(cx), named(cy));
     let lon_lat = header.as_ref().is_some_and(|h| is_lon_lat(&h[cx], &h[cy]));
-    Ok(Table { points, how, lon_lat })
+    Ok(Table { points, how, lon_lat, grouping })
 }
 
 /// Whether the first row, split into `fields`, is a header, by the plain reader's rule for

@@ -13,5 +13,6 @@ pub use read::{
     wkt_geometry, PointFormat, MAX_LINE, WKT_GEOMETRIES,
 };
 pub use write::{
-    write_edges, write_reconstruction, write_reconstruction_with, OutputFormat, WriteOptions,
+    write_edges, write_reconstruction, write_reconstruction_lon_lat, write_reconstruction_with,
+    OutputFormat, WriteOptions,
 };

@@ -136,20 +136,26 @@ pub enum LeftOutReason {
     /// FITCONNECT stopped at a pass or work limit before deciding the point
     /// ([`Status::Unfinished`]).
     Unresolved,
+    /// A vertex of a seam, not of a curve: longitude/latitude data stores a polygon cut at
+    /// the antimeridian as pieces whose boundaries run along ±180°, and the vertices between
+    /// the ends of the cut lie inside the area (set by `sigdt-io`'s local plane, which
+    /// recognises them; no method leaves points out for this).
+    Seam,
 }
 
 impl LeftOutReason {
     /// Every reason, in the order of their names' listing.
-    pub const ALL: [LeftOutReason; 5] = [
+    pub const ALL: [LeftOutReason; 6] = [
         LeftOutReason::Inside,
         LeftOutReason::Outlier,
         LeftOutReason::Eliminated,
         LeftOutReason::NonConforming,
         LeftOutReason::Unresolved,
+        LeftOutReason::Seam,
     ];
 
-    /// The kebab-case name: `inside`, `outlier`, `eliminated`, `non-conforming` or
-    /// `unresolved`.
+    /// The kebab-case name: `inside`, `outlier`, `eliminated`, `non-conforming`,
+    /// `unresolved` or `seam`.
     pub fn name(self) -> &'static str {
         match self {
             LeftOutReason::Inside => "inside",
@@ -157,6 +163,7 @@ impl LeftOutReason {
             LeftOutReason::Eliminated => "eliminated",
             LeftOutReason::NonConforming => "non-conforming",
             LeftOutReason::Unresolved => "unresolved",
+            LeftOutReason::Seam => "seam",
         }
     }
 }

@@ -7,6 +7,7 @@
 use std::io::{self, Write};
 
 use super::geometry::{geometry, write_pair, Kind, Notation};
+use crate::gis::outlines::Outlines;
 use sigdt::Point;
 use sigdt::{Finding, Reconstruction, Vertices};
 
@@ -43,12 +44,13 @@ impl Notation for GeoJson {
     }
 }
 
-/// The GeoJSON `Feature` of `rec`, from `n` input points whose positions for the geometry
-/// are `vertices` ([`Reconstruction::vertex_positions`]), and a newline.
+/// The GeoJSON `Feature` of `rec`, from `n` input points, whose geometry is `outlines` and
+/// whose positions are `vertices` ([`Reconstruction::vertex_positions`]), and a newline.
 pub(super) fn geojson(
     out: &mut Vec<u8>,
     n: usize,
     vertices: &[Point],
+    outlines: &Outlines,
     rec: &Reconstruction,
     options: &super::WriteOptions,
 ) -> io::Result<()> {
@@ -58,7 +60,7 @@ pub(super) fn geojson(
         write!(out, r#""crs": {{"type": "name", "properties": {{"name": "{name}"}}}}, "#)?;
     }
     out.extend_from_slice(br#""geometry": "#);
-    geometry::<GeoJson>(out, vertices, rec)?;
+    geometry::<GeoJson>(out, outlines)?;
     let (m, d, status) = (rec.edges.len(), rec.duplicates.len(), rec.status.name());
     let message = json_text(&rec.status.to_string());
     write!(out, r#", "properties": {{"status": "{status}", "status_message": "{message}", "#)?;

@@ -1,13 +1,13 @@
-//! The geometry of a result (its loops as polygons with holes, its paths as lines) in one
-//! walk, written in either notation: WKT ([`Wkt`](super::wkt::Wkt)) or GeoJSON
-//! ([`GeoJson`](super::geojson::GeoJson)).
+//! The geometry of a result (its loops as polygons with holes, its paths as lines, as
+//! [`outlines`](crate::gis::outlines) gives them) written in either notation: WKT
+//! ([`Wkt`](super::wkt::Wkt)) or GeoJSON ([`GeoJson`](super::geojson::GeoJson)).
 //!
-//! Loops are grouped by [`Reconstruction::polygons`]: shells counter-clockwise, holes
-//! clockwise (as both formats recommend). A ring repeats its first point at the end.
+//! Shells run counter-clockwise, holes clockwise (as both formats recommend). A ring
+//! repeats its first point at the end.
 use std::io::{self, Write};
 
+use crate::gis::outlines::Outlines;
 use sigdt::Point;
-use sigdt::Reconstruction;
 
 /// The geometry types both notations share.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -34,54 +34,40 @@ pub(super) trait Notation {
     fn point(out: &mut Vec<u8>, p: Point) -> io::Result<()>;
 }
 
-/// Writes the geometry of `rec` (indices into `points`) in notation `N`.
-pub(super) fn geometry<N: Notation>(
-    out: &mut Vec<u8>,
-    points: &[Point],
-    rec: &Reconstruction,
-) -> io::Result<()> {
-    match (rec.loops.is_empty(), rec.paths.is_empty()) {
+/// Writes the geometry of `outlines` in notation `N`.
+pub(super) fn geometry<N: Notation>(out: &mut Vec<u8>, outlines: &Outlines) -> io::Result<()> {
+    let polygons = &outlines.polygons;
+    let lines: Vec<&Vec<Point>> = outlines.lines.iter().flat_map(|l| &l.pieces).collect();
+    match (polygons.is_empty(), lines.is_empty()) {
         (true, true) => out.extend_from_slice(N::EMPTY.as_bytes()),
-        (false, true) => polygons::<N>(out, points, rec)?,
-        (true, false) => lines::<N>(out, points, &rec.paths)?,
+        (false, true) => write_polygons::<N>(out, polygons)?,
+        (true, false) => write_lines::<N>(out, &lines)?,
         (false, false) => {
             let [open, close] = N::COLLECTION;
             out.extend_from_slice(open.as_bytes());
-            polygons::<N>(out, points, rec)?;
+            write_polygons::<N>(out, polygons)?;
             out.extend_from_slice(b", ");
-            lines::<N>(out, points, &rec.paths)?;
+            write_lines::<N>(out, &lines)?;
             out.extend_from_slice(close.as_bytes());
         }
     }
     Ok(())
 }
 
-/// The loops as one polygon, or a multi-polygon when there are several shells.
-fn polygons<N: Notation>(
-    out: &mut Vec<u8>,
-    points: &[Point],
-    rec: &Reconstruction,
-) -> io::Result<()> {
-    let polygons = rec.polygons(points);
+/// The polygons as one polygon, or a multi-polygon when there are several.
+fn write_polygons<N: Notation>(out: &mut Vec<u8>, polygons: &[Vec<Vec<Point>>]) -> io::Result<()> {
     let multi = polygons.len() > 1;
     let [before, after] = N::tag(if multi { Kind::MultiPolygon } else { Kind::Polygon });
     out.extend_from_slice(before.as_bytes());
     if multi {
         out.extend_from_slice(N::OPEN.as_bytes());
     }
-    for (k, polygon) in polygons.iter().enumerate() {
+    for (k, rings) in polygons.iter().enumerate() {
         separate(out, k);
         out.extend_from_slice(N::OPEN.as_bytes());
-        let rings =
-            std::iter::once((polygon.shell, false)).chain(polygon.holes.iter().map(|&h| (h, true)));
-        for (r, (l, reversed)) in rings.enumerate() {
+        for (r, ring) in rings.iter().enumerate() {
             separate(out, r);
-            let ring = &rec.loops[l];
-            if reversed {
-                coordinates::<N>(out, points, ring.iter().rev().chain(ring.last()))?;
-            } else {
-                coordinates::<N>(out, points, ring.iter().chain(ring.first()))?;
-            }
+            coordinates::<N>(out, ring.iter().chain(ring.first()))?;
         }
         out.extend_from_slice(N::CLOSE.as_bytes());
     }
@@ -92,17 +78,17 @@ fn polygons<N: Notation>(
     Ok(())
 }
 
-/// The paths as one line string, or a multi-line string when there are several.
-fn lines<N: Notation>(out: &mut Vec<u8>, points: &[Point], paths: &[Vec<usize>]) -> io::Result<()> {
-    let multi = paths.len() > 1;
+/// The lines as one line string, or a multi-line string when there are several.
+fn write_lines<N: Notation>(out: &mut Vec<u8>, lines: &[&Vec<Point>]) -> io::Result<()> {
+    let multi = lines.len() > 1;
     let [before, after] = N::tag(if multi { Kind::MultiLineString } else { Kind::LineString });
     out.extend_from_slice(before.as_bytes());
     if multi {
         out.extend_from_slice(N::OPEN.as_bytes());
     }
-    for (k, path) in paths.iter().enumerate() {
+    for (k, line) in lines.iter().enumerate() {
         separate(out, k);
-        coordinates::<N>(out, points, path.iter())?;
+        coordinates::<N>(out, line.iter())?;
     }
     if multi {
         out.extend_from_slice(N::CLOSE.as_bytes());
@@ -111,16 +97,15 @@ fn lines<N: Notation>(out: &mut Vec<u8>, points: &[Point], paths: &[Vec<usize>])
     Ok(())
 }
 
-/// The coordinates of `indices` as one list.
+/// `points` as one list.
 fn coordinates<'a, N: Notation>(
     out: &mut Vec<u8>,
-    points: &[Point],
-    indices: impl Iterator<Item = &'a usize>,
+    points: impl Iterator<Item = &'a Point>,
 ) -> io::Result<()> {
     out.extend_from_slice(N::OPEN.as_bytes());
-    for (k, &i) in indices.enumerate() {
+    for (k, &p) in points.enumerate() {
         separate(out, k);
-        N::point(out, points[i])?;
+        N::point(out, p)?;
     }
     out.extend_from_slice(N::CLOSE.as_bytes());
     Ok(())

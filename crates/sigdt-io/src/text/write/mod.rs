@@ -15,6 +15,7 @@ use std::io::{self, Write};
 use std::path::Path;
 use std::str::FromStr;
 
+use crate::gis::outlines::outlines;
 use sigdt::Reconstruction;
 use sigdt::{Edge, Point};
 
@@ -101,19 +102,49 @@ pub struct WriteOptions {
 
 /// [`write_reconstruction`] with `options`.
 pub fn write_reconstruction_with<W: Write>(
+    w: W,
+    format: OutputFormat,
+    points: &[Point],
+    rec: &Reconstruction,
+    options: &WriteOptions,
+) -> io::Result<()> {
+    write_text(w, format, points, rec, options, false)
+}
+
+/// [`write_reconstruction_with`] for `points` that are longitude and latitude in degrees:
+/// the GeoJSON geometry (RFC 7946, §3.1.9) is cut at the antimeridian, its loops grouped in
+/// a local plane ([`outlines`](crate::gis::outlines::outlines)); the other formats are
+/// written as by [`write_reconstruction_with`].
+pub fn write_reconstruction_lon_lat<W: Write>(
+    w: W,
+    format: OutputFormat,
+    points: &[Point],
+    rec: &Reconstruction,
+    options: &WriteOptions,
+) -> io::Result<()> {
+    write_text(w, format, points, rec, options, true)
+}
+
+/// [`write_reconstruction_with`]; the GeoJSON geometry cut at the antimeridian when
+/// `lon_lat`.
+fn write_text<W: Write>(
     mut w: W,
     format: OutputFormat,
     points: &[Point],
     rec: &Reconstruction,
     options: &WriteOptions,
+    lon_lat: bool,
 ) -> io::Result<()> {
     let mut out = Vec::new();
     let vertices = rec.vertex_positions(points);
     match format {
         OutputFormat::Edges => return write_edges(w, &rec.edges),
         OutputFormat::Loops => loops(&mut out, rec)?,
-        OutputFormat::Wkt => wkt::wkt(&mut out, vertices, rec)?,
-        OutputFormat::GeoJson => geojson::geojson(&mut out, points.len(), vertices, rec, options)?,
+        OutputFormat::Wkt => wkt::wkt(&mut out, &outlines(points, rec, false))?,
+        OutputFormat::GeoJson => {
+            let outlines = outlines(points, rec, lon_lat);
+            geojson::geojson(&mut out, points.len(), vertices, &outlines, rec, options)?
+        }
     }
     w.write_all(&out)?;
     w.flush()

@@ -3,8 +3,8 @@
 use std::io;
 
 use super::geometry::{geometry, write_pair, Kind, Notation};
+use crate::gis::outlines::Outlines;
 use sigdt::Point;
-use sigdt::Reconstruction;
 
 /// The WKT notation.
 pub(super) struct Wkt;
@@ -30,9 +30,9 @@ impl Notation for Wkt {
     }
 }
 
-/// The WKT of `rec` and a newline.
-pub(super) fn wkt(out: &mut Vec<u8>, points: &[Point], rec: &Reconstruction) -> io::Result<()> {
-    geometry::<Wkt>(out, points, rec)?;
+/// The WKT of `outlines` and a newline.
+pub(super) fn wkt(out: &mut Vec<u8>, outlines: &Outlines) -> io::Result<()> {
+    geometry::<Wkt>(out, outlines)?;
     out.push(b'\n');
     Ok(())
 }

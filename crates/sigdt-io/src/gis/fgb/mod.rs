@@ -1,29 +1,26 @@
-//! FlatGeobuf (flatgeobuf.org, version 3): points read from a stream, results written as
-//! one layer.
+//! FlatGeobuf (flatgeobuf.org, version 3): points read from a stream (with the features'
+//! properties for `--by`), results written one layer a file ([`write()`]).
 //!
 //! Reading streams the file feature by feature (standard input too), with the format's own
 //! FlatBuffers verifier from the `flatgeobuf` crate, but our own framing: a feature's size
 //! prefix is not trusted (its bytes are read as they come, so a hostile size allocates
 //! nothing), and the spatial index is skipped with checked arithmetic.
-//!
-//! A FlatGeobuf file holds one layer, so a result is written as one: the curves
-//! (`kind` `polygon` or `path`, with `method`, `status`, `warning`, `diagnosis` and
-//! `vertices`) followed by the left-out points (`kind` `left-out`, with `row` and
-//! `reason`), each column empty where it does not apply.
 
 use std::io::{self, Read};
 
 use anyhow::{anyhow, bail, Result};
-use flatgeobuf::geozero::error::GeozeroError;
-use flatgeobuf::geozero::{ColumnValue, GeomProcessor, GeozeroGeometry, PropertyProcessor};
 use flatgeobuf::{
-    size_prefixed_root_as_feature, size_prefixed_root_as_header, ColumnType, FgbCrs, FgbWriter,
-    FgbWriterOptions, Geometry, GeometryType,
+    size_prefixed_root_as_feature, size_prefixed_root_as_header, Geometry, GeometryType,
 };
 use sigdt::Point;
 
 use super::crs::Crs;
-use super::layers::{Curve, CurveKind, Layers};
+use crate::attributes::Grouping;
+
+mod properties;
+mod write;
+
+pub use write::write;
 
 /// The first bytes of a FlatGeobuf file: `fgb`, the major version 3, `fgb`, a patch level.
 pub const MAGIC: &[u8] = b"fgb\x03fgb";
@@ -37,11 +34,24 @@ pub struct FgbPoints {
     pub points: Vec<Point>,
     /// The system the header declares, if any.
     pub crs: Option<Crs>,
+    /// The points grouped by a column (`--by`), each feature's properties its attributes.
+    pub grouping: Option<Grouping>,
 }
 
 /// The vertices of every feature of the FlatGeobuf stream `reader` (`name` in messages),
 /// at most `max` of them.
-pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<FgbPoints> {
+pub fn read(reader: impl Read, name: &str, max: usize) -> Result<FgbPoints> {
+    read_grouped(reader, name, max, None)
+}
+
+/// [`read`], the points grouped `by` a column of the header when given: the features'
+/// properties are the attributes.
+pub fn read_grouped(
+    mut reader: impl Read,
+    name: &str,
+    max: usize,
+    by: Option<&str>,
+) -> Result<FgbPoints> {
     let cut = |what: &str| anyhow!("{name}: FlatGeobuf: the file ends inside {what}");
     let mut magic = [0u8; 8];
     reader.read_exact(&mut magic).map_err(|_| cut("its magic bytes"))?;
@@ -74,6 +84,13 @@ pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<FgbPoints> 
         return Err(cut("its spatial index"));
     }
     let header_type = header.geometry_type();
+    let columns = by.map(|_| properties::Columns::of(&header));
+    let mut grouping = match (by, &columns) {
+        (Some(by), Some(columns)) => {
+            Some(Grouping::new(columns.columns.clone(), by, name).map_err(|m| anyhow!(m))?)
+        }
+        _ => None,
+    };
     let mut points = Vec::new();
     for number in 1.. {
         let bytes = match size_prefixed(&mut reader, usize::MAX) {
@@ -100,12 +117,20 @@ pub fn read(mut reader: impl Read, name: &str, max: usize) -> Result<FgbPoints> 
         };
         let feature = size_prefixed_root_as_feature(&bytes)
             .map_err(|e| anyhow!("{name}: FlatGeobuf: feature {number} is not valid: {e}"))?;
+        let before = points.len();
         if let Some(geometry) = feature.geometry() {
             vertices(&geometry, header_type, &mut points, max, 0)
                 .map_err(|why| anyhow!("{name}: FlatGeobuf: feature {number}: {why}"))?;
         }
+        if let (Some(grouping), Some(columns)) = (&mut grouping, &columns) {
+            let bytes = feature.properties().map_or(&[][..], |p| p.bytes());
+            let values = columns
+                .values(bytes)
+                .map_err(|why| anyhow!("{name}: FlatGeobuf: feature {number}: {why}"))?;
+            grouping.add(values, points.len() - before);
+        }
     }
-    Ok(FgbPoints { points, crs })
+    Ok(FgbPoints { points, crs, grouping })
 }
 
 enum Framing {
@@ -215,114 +240,18 @@ fn vertices(
     Ok(())
 }
 
-/// The FlatGeobuf file of `layers` (see the module docs) in the system `crs`, as bytes.
-pub fn write(layers: &Layers, crs: Option<&Crs>) -> Result<Vec<u8>> {
-    let crs = FgbCrs {
-        code: crs.and_then(|c| c.epsg).map_or(0, |c| c as i32),
-        wkt: crs.and_then(|c| c.wkt.as_deref()),
-        ..FgbCrs::default()
-    };
-    let options = FgbWriterOptions {
-        write_index: false,
-        detect_type: false,
-        promote_to_multi: false,
-        crs,
-        ..FgbWriterOptions::default()
-    };
-    let mut fgb = FgbWriter::create_with_options("curves", GeometryType::Unknown, options)?;
-    let columns = [
-        ("kind", ColumnType::String),
-        ("method", ColumnType::String),
-        ("status", ColumnType::String),
-        ("warning", ColumnType::Bool),
-        ("diagnosis", ColumnType::String),
-        ("vertices", ColumnType::Long),
-        ("row", ColumnType::Long),
-        ("reason", ColumnType::String),
-    ];
-    for (name, kind) in columns {
-        fgb.add_column(name, kind, |_, column| column.nullable = true);
-    }
-    let run = &layers.run;
-    for curve in &layers.curves {
-        fgb.add_feature_geom(curve, |f| {
-            let values = [
-                (0, "kind", ColumnValue::String(curve.kind.name())),
-                (1, "method", ColumnValue::String(&run.method)),
-                (2, "status", ColumnValue::String(run.status)),
-                (3, "warning", ColumnValue::Bool(run.warning)),
-                (4, "diagnosis", ColumnValue::String(&run.diagnosis)),
-                (5, "vertices", ColumnValue::Long(curve.vertices as i64)),
-            ];
-            for (i, name, value) in &values {
-                f.property(*i, name, value).expect("a column of the header");
-            }
-        })?;
-    }
-    for left in &layers.left_out {
-        fgb.add_feature_geom(LeftOutPoint(left.point), |f| {
-            let values = [
-                (0, "kind", ColumnValue::String("left-out")),
-                (6, "row", ColumnValue::Long(left.row as i64)),
-                (7, "reason", ColumnValue::String(left.reason)),
-            ];
-            for (i, name, value) in &values {
-                f.property(*i, name, value).expect("a column of the header");
-            }
-        })?;
-    }
-    let mut out = Vec::new();
-    fgb.write(&mut out)?;
-    Ok(out)
-}
-
-/// A curve's geometry for geozero: a polygon's rings closed (their first point repeated, as
-/// the format wants), or a line string.
-impl GeozeroGeometry for &Curve {
-    fn process_geom<P: GeomProcessor>(&self, p: &mut P) -> Result<(), GeozeroError> {
-        let line = |p: &mut P, points: &[Point], tagged: bool, k: usize| {
-            let closing = (!tagged).then(|| points[0]);
-            let all: Vec<_> = points.iter().copied().chain(closing).collect();
-            p.linestring_begin(tagged, all.len(), k)?;
-            for (i, [x, y]) in all.into_iter().enumerate() {
-                p.xy(x, y, i)?;
-            }
-            p.linestring_end(tagged, k)
-        };
-        match self.kind {
-            CurveKind::Path => line(p, &self.rings[0], true, 0),
-            CurveKind::Polygon => {
-                p.polygon_begin(true, self.rings.len(), 0)?;
-                for (k, ring) in self.rings.iter().enumerate() {
-                    line(p, ring, false, k)?;
-                }
-                p.polygon_end(true, 0)
-            }
-        }
-    }
-}
-
-/// A left-out point's geometry for geozero.
-struct LeftOutPoint(Point);
-
-impl GeozeroGeometry for LeftOutPoint {
-    fn process_geom<P: GeomProcessor>(&self, p: &mut P) -> Result<(), GeozeroError> {
-        p.point_begin(0)?;
-        p.xy(self.0[0], self.0[1], 0)?;
-        p.point_end(0)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::gis::layers::{Layer, Layers};
     use sigdt::{Method, Options};
 
     /// A FlatGeobuf file of the outline of a square and, after it, its last feature again.
     fn one_feature_too_many() -> Vec<u8> {
         let points = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
         let rec = sigdt::reconstruct(&points, &Options::default()).unwrap();
-        let mut bytes = write(&Layers::new(Method::SigAuto, &points, &rec), None).unwrap();
+        let layers = Layers::new(Method::SigAuto, &points, &rec, false);
+        let mut bytes = write(&layers, Layer::Areas, None).unwrap();
         let prefix = |at: usize| u32::from_le_bytes(bytes[at..at + 4].try_into().unwrap()) as usize;
         // The magic bytes, the size-prefixed header, then size-prefixed features (no index).
         let mut at = 8 + 4 + prefix(8);
@@ -334,6 +263,41 @@ mod tests {
         let copy = bytes[last..].to_vec();
         bytes.extend(copy);
         bytes
+    }
+
+    #[test]
+    fn every_layer_is_written_with_its_type_and_reads_back() {
+        // A square and a failed group (an empty multi-polygon): the square's four vertices.
+        let points = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let rec = sigdt::reconstruct(&points, &Options::default()).unwrap();
+        let mut layers = Layers::new(Method::SigAuto, &points, &rec, false);
+        layers.add_failed(Vec::new(), Method::SigAuto, "too few points".into());
+        for layer in Layer::ALL {
+            let bytes = write(&layers, layer, None).unwrap();
+            let header = size_prefixed_root_as_header(&bytes[8..]).unwrap();
+            let expected = match layer {
+                Layer::Areas => GeometryType::MultiPolygon,
+                Layer::Paths | Layer::Networks => GeometryType::MultiLineString,
+                Layer::LeftOut => GeometryType::Point,
+            };
+            assert_eq!((header.name(), header.geometry_type()), (Some(layer.name()), expected));
+            assert_eq!(header.features_count(), layers.len(layer) as u64);
+            let read = read(&bytes[..], "a.fgb", 100).unwrap();
+            let vertices = if layer == Layer::Areas { points.len() } else { 0 };
+            assert_eq!(read.points.len(), vertices, "{layer:?}");
+        }
+        // The failed group's feature has no geometry (GDAL refuses one without parts), and
+        // keeps its properties.
+        let bytes = write(&layers, Layer::Areas, None).unwrap();
+        let prefix = |at: usize| u32::from_le_bytes(bytes[at..at + 4].try_into().unwrap()) as usize;
+        let first = 8 + 4 + prefix(8);
+        let second = first + 4 + prefix(first);
+        let feature = |at: usize| size_prefixed_root_as_feature(&bytes[at..]).unwrap();
+        assert!(feature(first).geometry().is_some());
+        assert!(feature(second).geometry().is_none());
+        let properties = feature(second).properties().unwrap().bytes().to_vec();
+        assert!(String::from_utf8_lossy(&properties).contains("too few points"));
+        assert_eq!(second + 4 + prefix(second), bytes.len());
     }
 
     #[test]

@@ -1,6 +1,7 @@
-//! GeoPackage (OGC 12-128r18): points read from a feature layer, results written as the
-//! [`Layers`] `curves` and `left_out`. SQLite is compiled in (rusqlite's bundled build), so
-//! nothing is needed on the machine; a file is read in place, and a result is built in
+//! GeoPackage (OGC 12-128r18): points read from a feature layer (with its attributes for
+//! `--by`), results written as the [`Layers`](super::layers::Layers) `areas`, `paths`,
+//! `networks` and `left_out` ([`write()`]). SQLite is compiled in (rusqlite's bundled build),
+//! so nothing is needed on the machine; a file is read in place, and a result is built in
 //! memory and handed over as bytes, so it is written atomically like every output.
 //!
 //! A geometry blob is the GeoPackage header (`GP`, version, flags, SRS id, optional
@@ -10,12 +11,18 @@ use std::path::Path;
 
 use crate::text::quoted;
 use anyhow::{anyhow, bail, Context, Result};
+use rusqlite::types::ValueRef;
 use rusqlite::{Connection, OpenFlags, OptionalExtension};
 use sigdt::Point;
 
-use super::crs::{Crs, WGS84_WKT};
-use super::layers::Layers;
+use super::crs::Crs;
+use super::layers::Layer;
 use super::wkb::read_vertices;
+use crate::attributes::{Column, ColumnType, Grouping, Value};
+
+mod write;
+
+pub use write::write;
 
 /// The first bytes of every SQLite database, so of every GeoPackage.
 pub const MAGIC: &[u8] = b"SQLite format 3\0";
@@ -28,12 +35,27 @@ pub struct Read {
     pub crs: Option<Crs>,
     /// The layer read.
     pub layer: String,
+    /// The points grouped by a column of the layer (`--by`), each feature's other columns
+    /// its attributes.
+    pub grouping: Option<Grouping>,
 }
 
 /// The points of the GeoPackage at `path` (`name` in messages): every vertex of every
 /// feature of `layer`, or of the only feature layer, or of the only point layer, in
 /// feature order; at most `max` of them.
 pub fn read(path: &Path, name: &str, layer: Option<&str>, max: usize) -> Result<Read> {
+    read_grouped(path, name, layer, max, None)
+}
+
+/// [`read`], the points grouped `by` a column of the layer when given: its other columns
+/// (but the feature id and BLOBs) are the attributes.
+pub fn read_grouped(
+    path: &Path,
+    name: &str,
+    layer: Option<&str>,
+    max: usize,
+    by: Option<&str>,
+) -> Result<Read> {
     let flags = OpenFlags::SQLITE_OPEN_READ_ONLY | OpenFlags::SQLITE_OPEN_NO_MUTEX;
     let db = Connection::open_with_flags(path, flags)
         .with_context(|| format!("{name}: cannot open as a GeoPackage"))?;
@@ -52,7 +74,7 @@ pub fn read(path: &Path, name: &str, layer: Option<&str>, max: usize) -> Result<
             let points: Vec<_> = layers.iter().filter(|l| l.is_points()).collect();
             // An empty point layer beside others (sigdt's own `left_out` when nothing was left
             // out) is not what the user means to read.
-            let has_rows = |l: &Layer| -> rusqlite::Result<bool> {
+            let has_rows = |l: &FeatureTable| -> rusqlite::Result<bool> {
                 let query = format!("SELECT EXISTS (SELECT 1 FROM {})", identifier(&l.table));
                 db.query_row(&query, [], |row| row.get(0))
             };
@@ -94,12 +116,28 @@ pub fn read(path: &Path, name: &str, layer: Option<&str>, max: usize) -> Result<
         )
         .map_err(sql_error)?;
     let fid = if is_view { "NULL".to_string() } else { identifier("rowid") };
-    let query =
-        format!("SELECT {fid}, {} FROM {}", identifier(&chosen.column), identifier(&chosen.table));
+    let table = quoted(&chosen.table);
+    let mut grouping = match by {
+        None => None,
+        Some(by) => {
+            let columns = attribute_columns(&db, chosen).map_err(sql_error)?;
+            let shown = format!("{name}: layer {table}");
+            Some(Grouping::new(columns, by, &shown).map_err(|m| anyhow!(m))?)
+        }
+    };
+    let attributes: Vec<String> = grouping
+        .iter()
+        .flat_map(|g| g.columns.iter().map(|c| format!(", {}", identifier(&c.name))))
+        .collect();
+    let query = format!(
+        "SELECT {fid}, {}{} FROM {}",
+        identifier(&chosen.column),
+        attributes.concat(),
+        identifier(&chosen.table)
+    );
     let mut statement = db.prepare(&query).map_err(sql_error)?;
     let mut rows = statement.query([]).map_err(sql_error)?;
     let mut points = Vec::new();
-    let table = quoted(&chosen.table);
     let mut position = 0i64;
     while let Some(row) = rows.next().map_err(sql_error)? {
         position += 1;
@@ -108,16 +146,25 @@ pub fn read(path: &Path, name: &str, layer: Option<&str>, max: usize) -> Result<
             anyhow!("{name}: layer {table}, feature {fid}: the geometry is not a blob ({e})")
         })?;
         let Some(blob) = blob else { continue };
+        let before = points.len();
         geometry_vertices(&blob, &mut points, max)
             .map_err(|why| anyhow!("{name}: layer {table}, feature {fid}: {why}"))?;
+        if let Some(grouping) = &mut grouping {
+            let values = (0..grouping.columns.len())
+                .map(|c| value(row.get_ref(2 + c)?, grouping.columns[c].kind))
+                .collect::<rusqlite::Result<Vec<Value>>>()
+                .map_err(sql_error)?;
+            grouping.add(values, points.len() - before);
+        }
     }
-    Ok(Read { points, crs, layer: chosen.table.clone() })
+    Ok(Read { points, crs, layer: chosen.table.clone(), grouping })
 }
 
 /// The layers of the GeoPackage at `path` that sigdt would not write itself (every table
-/// but `curves`, `left_out` and the GeoPackage's own `gpkg_*` and `rtree_*` tables), so that
-/// writing over it does not delete a user's layers; empty when `path` is not a readable
-/// SQLite file (a file of another kind is the caller's to refuse or replace).
+/// but those of [`Layer::ALL`], `curves` (which sigdt wrote before them) and the
+/// GeoPackage's own `gpkg_*` and `rtree_*` tables), so that writing over it does not delete
+/// a user's layers; empty when `path` is not a readable SQLite file (a file of another kind
+/// is the caller's to refuse or replace).
 pub fn foreign_tables(path: &Path) -> Vec<String> {
     let flags = OpenFlags::SQLITE_OPEN_READ_ONLY | OpenFlags::SQLITE_OPEN_NO_MUTEX;
     let Ok(db) = Connection::open_with_flags(path, flags) else { return Vec::new() };
@@ -128,7 +175,8 @@ pub fn foreign_tables(path: &Path) -> Vec<String> {
             .collect::<rusqlite::Result<Vec<_>>>()
     });
     let ours = |name: &str| {
-        matches!(name, "curves" | "left_out")
+        name == "curves"
+            || Layer::ALL.iter().any(|layer| layer.name() == name)
             || name.starts_with("gpkg_")
             || name.starts_with("rtree_")
             || name.starts_with("sqlite_")
@@ -137,26 +185,26 @@ pub fn foreign_tables(path: &Path) -> Vec<String> {
 }
 
 /// A feature layer of a GeoPackage.
-struct Layer {
+struct FeatureTable {
     table: String,
     column: String,
     geometry_type: String,
     srs_id: i64,
 }
 
-impl Layer {
+impl FeatureTable {
     fn is_points(&self) -> bool {
         matches!(self.geometry_type.to_ascii_uppercase().as_str(), "POINT" | "MULTIPOINT")
     }
 }
 
-fn feature_layers(db: &Connection) -> rusqlite::Result<Vec<Layer>> {
+fn feature_layers(db: &Connection) -> rusqlite::Result<Vec<FeatureTable>> {
     let mut statement = db.prepare(
         "SELECT table_name, column_name, geometry_type_name, srs_id FROM gpkg_geometry_columns \
          ORDER BY table_name",
     )?;
     let layers = statement.query_map([], |row| {
-        Ok(Layer {
+        Ok(FeatureTable {
             table: row.get(0)?,
             column: row.get(1)?,
             geometry_type: row.get(2)?,
@@ -164,6 +212,47 @@ fn feature_layers(db: &Connection) -> rusqlite::Result<Vec<Layer>> {
         })
     })?;
     layers.collect()
+}
+
+/// The attribute columns of `layer`: every column but the geometry, the feature id (an
+/// `INTEGER PRIMARY KEY`) and BLOBs, typed by their declared type (SQLite's affinity rules).
+fn attribute_columns(db: &Connection, layer: &FeatureTable) -> rusqlite::Result<Vec<Column>> {
+    let query = format!("PRAGMA table_info({})", identifier(&layer.table));
+    let mut statement = db.prepare(&query)?;
+    let columns = statement.query_map([], |row| {
+        Ok((row.get::<_, String>(1)?, row.get::<_, String>(2)?, row.get::<_, i64>(5)?))
+    })?;
+    let mut kept = Vec::new();
+    for column in columns {
+        let (name, declared, pk) = column?;
+        let declared = declared.to_ascii_uppercase();
+        let is_id = pk > 0 && declared == "INTEGER";
+        if name.eq_ignore_ascii_case(&layer.column) || is_id || declared.contains("BLOB") {
+            continue;
+        }
+        let kind = if declared.contains("BOOL") {
+            ColumnType::Bool
+        } else if declared.contains("INT") {
+            ColumnType::Integer
+        } else if ["REAL", "FLOA", "DOUB"].iter().any(|t| declared.contains(t)) {
+            ColumnType::Real
+        } else {
+            ColumnType::Text
+        };
+        kept.push(Column { name, kind });
+    }
+    Ok(kept)
+}
+
+/// An SQLite value of a column of type `kind` as an attribute (a BLOB as no value).
+fn value(v: ValueRef<'_>, kind: ColumnType) -> rusqlite::Result<Value> {
+    Ok(match v {
+        ValueRef::Null | ValueRef::Blob(_) => Value::Null,
+        ValueRef::Integer(n) if kind == ColumnType::Bool => Value::Bool(n != 0),
+        ValueRef::Integer(n) => Value::Integer(n),
+        ValueRef::Real(x) => Value::Real(x),
+        ValueRef::Text(bytes) => Value::Text(String::from_utf8_lossy(bytes).into_owned()),
+    })
 }
 
 /// The system of `srs_id`: none for the undefined ones (-1, 0); `QueryReturnedNoRows` when
@@ -223,109 +312,61 @@ fn identifier(name: &str) -> String {
     format!("\"{}\"", name.replace('"', "\"\""))
 }
 
-/// The GeoPackage of `layers` in the system `crs` (undefined when `None`), as bytes.
-pub fn write(layers: &Layers, crs: Option<&Crs>) -> Result<Vec<u8>> {
-    let mut db = Connection::open_in_memory()?;
-    let (srs_id, organization, code, definition) = match crs {
-        Some(Crs { epsg: Some(code), wkt }) => {
-            let known = (*code == 4326).then_some(WGS84_WKT);
-            let definition = wkt.as_deref().or(known).unwrap_or("undefined");
-            (i64::from(*code), "EPSG", i64::from(*code), definition.to_string())
-        }
-        Some(Crs { epsg: None, wkt: Some(wkt) }) => (100_000, "NONE", 100_000, wkt.clone()),
-        _ => (-1, "NONE", -1, "undefined".to_string()),
-    };
-    db.execute_batch(SCHEMA)?;
-    db.execute(
-        "INSERT INTO gpkg_spatial_ref_sys VALUES ('WGS 84 geodetic', 4326, 'EPSG', 4326, ?1, \
-         'longitude/latitude coordinates in decimal degrees on the WGS 84 spheroid')",
-        [WGS84_WKT],
-    )?;
-    if srs_id > 0 && srs_id != 4326 {
-        db.execute(
-            "INSERT INTO gpkg_spatial_ref_sys VALUES (?1, ?2, ?3, ?4, ?5, NULL)",
-            rusqlite::params![crs.map(ToString::to_string), srs_id, organization, code, definition],
-        )?;
-    }
-    let bounds =
-        layers.curves.iter().map(|c| c.bounds).chain(
-            layers.left_out.iter().map(|l| [l.point[0], l.point[1], l.point[0], l.point[1]]),
-        );
-    let all = bounds.fold(None, |acc: Option<[f64; 4]>, b| {
-        Some(acc.map_or(b, |a| [a[0].min(b[0]), a[1].min(b[1]), a[2].max(b[2]), a[3].max(b[3])]))
-    });
-    for (table, kind) in [("curves", "GEOMETRY"), ("left_out", "POINT")] {
-        let [x0, y0, x1, y1] = all.map_or([None; 4], |b| b.map(Some));
-        db.execute(
-            "INSERT INTO gpkg_contents (table_name, data_type, identifier, min_x, min_y, max_x, \
-             max_y, srs_id) VALUES (?1, 'features', ?1, ?2, ?3, ?4, ?5, ?6)",
-            rusqlite::params![table, x0, y0, x1, y1, srs_id],
-        )?;
-        db.execute(
-            "INSERT INTO gpkg_geometry_columns VALUES (?1, 'geom', ?2, ?3, 0, 0)",
-            rusqlite::params![table, kind, srs_id],
-        )?;
-    }
-    let header = |srs: i64| {
-        let mut blob = b"GP\0\x01".to_vec(); // version 0; flags: little-endian, no envelope
-        blob.extend_from_slice(&(srs as i32).to_le_bytes());
-        blob
-    };
-    {
-        let run = &layers.run;
-        let mut insert = db.prepare(
-            "INSERT INTO curves (geom, kind, method, status, warning, diagnosis, vertices) \
-             VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)",
-        )?;
-        for curve in &layers.curves {
-            insert.execute(rusqlite::params![
-                curve.wkb(header(srs_id)),
-                curve.kind.name(),
-                run.method,
-                run.status,
-                run.warning,
-                run.diagnosis,
-                curve.vertices as i64
-            ])?;
-        }
-        let mut insert =
-            db.prepare("INSERT INTO left_out (geom, row, reason) VALUES (?1, ?2, ?3)")?;
-        for left in &layers.left_out {
-            let mut w = super::wkb::Writer(header(srs_id));
-            w.point(left.point);
-            insert.execute(rusqlite::params![w.0, left.row as i64, left.reason])?;
-        }
-    }
-    let bytes = db.serialize(rusqlite::MAIN_DB)?.to_vec();
-    Ok(bytes)
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gis::layers::Layers;
+    use sigdt::{Method, Options};
 
-/// The tables every GeoPackage has (with two of the three systems it must define; WGS 84 is
-/// added with [`WGS84_WKT`]), and the two feature tables of a result.
-const SCHEMA: &str = r#"
-PRAGMA application_id = 1196444487;
-PRAGMA user_version = 10400;
-CREATE TABLE gpkg_spatial_ref_sys (
-  srs_name TEXT NOT NULL, srs_id INTEGER PRIMARY KEY, organization TEXT NOT NULL,
-  organization_coordsys_id INTEGER NOT NULL, definition TEXT NOT NULL, description TEXT);
-INSERT INTO gpkg_spatial_ref_sys VALUES
-  ('Undefined cartesian SRS', -1, 'NONE', -1, 'undefined', 'undefined cartesian coordinate reference system'),
-  ('Undefined geographic SRS', 0, 'NONE', 0, 'undefined', 'undefined geographic coordinate reference system');
-CREATE TABLE gpkg_contents (
-  table_name TEXT NOT NULL PRIMARY KEY, data_type TEXT NOT NULL, identifier TEXT UNIQUE,
-  description TEXT DEFAULT '',
-  last_change DATETIME NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ','now')),
-  min_x DOUBLE, min_y DOUBLE, max_x DOUBLE, max_y DOUBLE, srs_id INTEGER,
-  CONSTRAINT fk_gc_r_srs_id FOREIGN KEY (srs_id) REFERENCES gpkg_spatial_ref_sys(srs_id));
-CREATE TABLE gpkg_geometry_columns (
-  table_name TEXT NOT NULL, column_name TEXT NOT NULL, geometry_type_name TEXT NOT NULL,
-  srs_id INTEGER NOT NULL, z TINYINT NOT NULL, m TINYINT NOT NULL,
-  CONSTRAINT pk_geom_cols PRIMARY KEY (table_name, column_name),
-  CONSTRAINT fk_gc_tn FOREIGN KEY (table_name) REFERENCES gpkg_contents(table_name),
-  CONSTRAINT fk_gc_srs FOREIGN KEY (srs_id) REFERENCES gpkg_spatial_ref_sys (srs_id));
-CREATE TABLE curves (
-  fid INTEGER PRIMARY KEY AUTOINCREMENT NOT NULL, geom GEOMETRY, kind TEXT, method TEXT,
-  status TEXT, warning BOOLEAN, diagnosis TEXT, vertices INTEGER);
-CREATE TABLE left_out (
-  fid INTEGER PRIMARY KEY AUTOINCREMENT NOT NULL, geom POINT, row INTEGER, reason TEXT);
-"#;
+    #[test]
+    fn four_tables_each_of_one_geometry_type_with_the_group_attributes() {
+        let points = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let rec = sigdt::reconstruct(&points, &Options::default()).unwrap();
+        let column = |name: &str, kind| Column { name: name.into(), kind };
+        let mut layers = Layers::with_columns(vec![
+            column("island", ColumnType::Text),
+            column("status", ColumnType::Integer),
+        ]);
+        let values = vec![Value::Text("a".into()), Value::Integer(7)];
+        layers.add(values, Method::SigAuto, &points, &rec, false, None);
+        layers.add_failed(vec![Value::Null, Value::Null], Method::SigAuto, "no points".into());
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("o.gpkg");
+        std::fs::write(&path, write(&layers, None).unwrap()).unwrap();
+        let db = Connection::open(&path).unwrap();
+        let mut types =
+            db.prepare("SELECT table_name, geometry_type_name FROM gpkg_geometry_columns").unwrap();
+        let types: Vec<(String, String)> = types
+            .query_map([], |row| Ok((row.get(0)?, row.get(1)?)))
+            .unwrap()
+            .collect::<rusqlite::Result<_>>()
+            .unwrap();
+        let expected = [
+            ("areas", "MULTIPOLYGON"),
+            ("left_out", "POINT"),
+            ("networks", "MULTILINESTRING"),
+            ("paths", "MULTILINESTRING"),
+        ];
+        let mut types = types;
+        types.sort();
+        assert_eq!(types, expected.map(|(a, b)| (a.to_string(), b.to_string())));
+        let query = "SELECT island, input_status, status, diagnosis, vertices, length(geom) \
+                     FROM areas ORDER BY fid";
+        let mut rows = db.prepare(query).unwrap();
+        let rows: Vec<Vec<rusqlite::types::Value>> = rows
+            .query_map([], |r| (0..6).map(|k| r.get(k)).collect())
+            .unwrap()
+            .collect::<rusqlite::Result<_>>()
+            .unwrap();
+        use rusqlite::types::Value as V;
+        let text = |s: &str| V::Text(s.to_string());
+        let island = [text("a"), V::Integer(7), text("polygon"), text(""), V::Integer(4)];
+        assert_eq!(rows[0][..5], island);
+        // The failed group: an empty multi-polygon (header and 9 bytes), the error.
+        let failed = [V::Null, V::Null, text("error"), text("no points"), V::Integer(0)];
+        assert_eq!((&rows[1][..5], &rows[1][5]), (&failed[..], &V::Integer(17)));
+        // Read back: the square's vertices; the empty geometry has none.
+        let read = read(&path, "o.gpkg", Some("areas"), 100).unwrap();
+        assert_eq!(read.points.len(), 4);
+    }
+}
