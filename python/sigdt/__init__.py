@@ -14,6 +14,7 @@ out.
 from ._api import proximity_graph, read_points, reconstruct, reconstruct_many
 from ._core import GRAPH_KINDS, METHODS, __version__
 from ._eval import evaluate, graph_epsilon, graph_overlap
+from ._geometries import outlines
 from ._result import Reconstruction
 from ._trace import PHASES, Trace, trace
 from .errors import InternalError, InvalidInputError, ParseError, SigdtError, SigdtWarning
@@ -37,6 +38,7 @@ __all__ = [
     "from_shapely",
     "graph_epsilon",
     "graph_overlap",
+    "outlines",
     "plot_steps",
     "proximity_graph",
     "read_points",

@@ -108,6 +108,10 @@ def read_points(
 def place(
     points: npt.NDArray[np.float64], width: float
 ) -> tuple[float, npt.NDArray[np.float64]]: ...  # (height, (n, 2) pixels, y down)
+def split_polygon_at_antimeridian(
+    rings: list[npt.NDArray[np.float64]],
+) -> list[list[npt.NDArray[np.float64]]]: ...
+def split_line_at_antimeridian(line: npt.NDArray[np.float64]) -> list[npt.NDArray[np.float64]]: ...
 def evaluate(
     points: npt.NDArray[np.float64], edges: npt.NDArray[np.int64], gt: npt.NDArray[np.int64]
 ) -> dict[str, bool | int | float | None]: ...

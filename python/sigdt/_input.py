@@ -103,6 +103,17 @@ def _is_geographic(crs: Any) -> bool:
     return bool(getattr(crs, "is_geographic", False))
 
 
+def _unwrapped(lon_lat: np.ndarray) -> np.ndarray:
+    """Longitude/latitude with each longitude shifted by whole turns to within 180° of the
+    points' circular mean longitude (the centre of their local plane): a chart without a cut
+    where the points are, so that rings across ±180° nest and overlap as on the ground."""
+    lon = np.radians(lon_lat[:, 0])
+    centre = np.degrees(np.arctan2(np.sin(lon).sum(), np.cos(lon).sum())) if len(lon) else 0.0
+    out = np.array(lon_lat, dtype=np.float64, copy=True)
+    out[:, 0] = centre + (out[:, 0] - centre + 180.0) % 360.0 - 180.0
+    return out
+
+
 def _as_points(points: Any) -> np.ndarray:
     geometric = _geometry_points(points)
     if geometric is not None:

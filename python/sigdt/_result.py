@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any, cast, get_args
 import numpy as np
 
 from . import _core
+from ._input import _is_geographic, _unwrapped
 from ._outlines import Coordinates, Indices, ShapelyResult
 from ._types import Finding, GeoJsonFeature, LeftOutReason, Method, Status, VerticesKind
 
@@ -85,7 +86,8 @@ class Reconstruction:
         edges.
     left_out_reasons : list of str
         Why each point of ``left_out`` was left out, in the same order: ``"inside"``,
-        ``"outlier"``, ``"eliminated"``, ``"non-conforming"`` or ``"unresolved"``.
+        ``"outlier"``, ``"eliminated"``, ``"non-conforming"``, ``"unresolved"`` or ``"seam"``
+        (a vertex between the ends of a cut at the antimeridian, in longitude/latitude).
     diagnosis : list of dict
         What the sampling check found, as dicts with ``kind``, ``count``, ``worst``, ``at``,
         ``point`` (its coordinates) and ``message``: where the loops and paths break the sampling condition they
@@ -109,17 +111,53 @@ class Reconstruction:
         :meth:`to_geopandas` keeps. ``None`` for any other input.
     """
 
-    __slots__ = ("_fields", "_polygons", "crs", "index", "points")
+    __slots__ = ("_fields", "_lon_lat", "_polygons", "crs", "index", "points")
 
     def __init__(
-        self, points: Coordinates, fields: _Reconstruction, index: Any = None, crs: Any = None
+        self,
+        points: Coordinates,
+        fields: _Reconstruction,
+        index: Any = None,
+        crs: Any = None,
+        lon_lat: bool | None = None,
     ) -> None:
         self.points = points
         self.index = index
         self.crs = crs
+        self._lon_lat = _is_geographic(crs) if lon_lat is None else bool(lon_lat)
         # The extension's dict as it is: what __eq__ compares and pickling stores.
         self._fields = fields
         self._polygons: list[tuple[int, list[int]]] | None = None
+
+    @property
+    def lon_lat(self) -> bool:
+        """Whether the points are longitude/latitude in degrees (``lon_lat=True`` given, or a
+        geographic coordinate reference system): then they were reconstructed in a local
+        plane, and :meth:`layers` and the shapely and GeoPandas views split what crosses
+        ±180° so that it is valid in EPSG:4326."""
+        return self._lon_lat
+
+    def layers(self) -> dict[str, list[Any]]:
+        """The result as GIS layers of one geometry type each, as coordinate arrays (no
+        shapely needed): ``"areas"``, a list of polygons, each a list of rings (shell, then
+        holes; ``(k, 2)`` arrays, not closed); ``"paths"``, the open paths that end at no
+        junction, and ``"networks"``, the paths with an end at a junction, lists of
+        ``(k, 2)`` arrays. With :attr:`lon_lat`, split at the antimeridian (RFC 7946
+        §3.1.9), each piece within longitude [-180, 180], as the command line writes GIS
+        files.
+
+        Examples
+        --------
+        >>> import sigdt
+        >>> rec = sigdt.reconstruct([[179.9, 0], [-179.9, 0], [-179.9, 0.2], [179.9, 0.2]],
+        ...                         lon_lat=True)
+        >>> sorted([float(ring[:, 0].min()), float(ring[:, 0].max())]
+        ...        for ring, *holes in rec.layers()["areas"])
+        [[-180.0, -179.9], [179.9, 180.0]]
+        """
+        from . import _layers
+
+        return _layers.coordinates(self)
 
     @property
     def edges(self) -> Indices:
@@ -210,8 +248,11 @@ class Reconstruction:
         (2, [(0, [1])])
         """
         if self._polygons is None:
+            # Longitude/latitude nest as in the local plane once unwrapped: a ring across
+            # ±180° jumps by 360° in the stored degrees.
+            at = _unwrapped(self.vertices) if self.lon_lat else self.vertices
             self._polygons = _core.polygons(
-                np.require(self.vertices, dtype=np.float64, requirements=["C", "A"]),
+                np.require(at, dtype=np.float64, requirements=["C", "A"]),
                 np.require(self._fields["loop_vertices"], dtype=np.int64, requirements=["A"]),
                 np.require(self._fields["loop_offsets"], dtype=np.int64, requirements=["A"]),
             )
@@ -304,6 +345,7 @@ class Reconstruction:
         return (
             np.array_equal(self.points, other.points)
             and self.crs == other.crs
+            and self.lon_lat == other.lon_lat
             and mine.keys() == theirs.keys()
             and all(_same(mine[k], theirs[k]) for k in mine)
         )
@@ -311,4 +353,7 @@ class Reconstruction:
     __hash__ = None  # type: ignore[assignment]  # mutable arrays inside
 
     def __reduce__(self) -> tuple[Any, ...]:
-        return (Reconstruction, (self.points, self._fields, self.index, self.crs))
+        return (
+            Reconstruction,
+            (self.points, self._fields, self.index, self.crs, self._lon_lat),
+        )

@@ -55,7 +55,7 @@ Status = Literal[
 VerticesKind = Literal["input", "moved", "new"]
 
 #: Why a point was left out (:attr:`sigdt.Reconstruction.left_out_reasons`).
-LeftOutReason = Literal["inside", "outlier", "eliminated", "non-conforming", "unresolved"]
+LeftOutReason = Literal["inside", "outlier", "eliminated", "non-conforming", "unresolved", "seam"]
 
 
 class Evaluation(TypedDict):

@@ -9,7 +9,7 @@ reconstructed in a plane centred on each group (azimuthal equidistant), as
 
 from __future__ import annotations
 
-from ._frame import GROUP_COLUMNS, reconstruct_frame
+from ._frame import GROUP_COLUMNS, layers, reconstruct_frame
 from ._geodataframe import CURVE_COLUMNS, to_geopandas
 
-__all__ = ["CURVE_COLUMNS", "GROUP_COLUMNS", "reconstruct_frame", "to_geopandas"]
+__all__ = ["CURVE_COLUMNS", "GROUP_COLUMNS", "layers", "reconstruct_frame", "to_geopandas"]

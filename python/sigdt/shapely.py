@@ -15,10 +15,6 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["from_shapely", "to_geojson", "to_shapely", "to_svg", "to_wkt"]
 
 
-def _rings(rec: Outlines) -> list[np.ndarray]:
-    return [rec.vertices[loop] for loop in rec.loops]
-
-
 def to_shapely(rec: Outlines, *, faces: bool = False) -> ShapelyResult:
     """The result as a shapely geometry: loops as polygons, open paths as lines.
 
@@ -70,25 +66,25 @@ def to_shapely(rec: Outlines, *, faces: bool = False) -> ShapelyResult:
     """
     import shapely
 
-    rings = _rings(rec)
-    polygons = [
-        shapely.Polygon(rings[shell], [rings[h] for h in holes]) for shell, holes in rec.polygons
-    ]
-    lines = [rec.vertices[p] for p in rec.paths]
+    from . import _layers
+
+    # In longitude/latitude split at the antimeridian (valid in EPSG:4326).
+    polygons = _layers.polygons(rec)
+    lines = _layers.lines(rec, list(rec.paths))
     if faces:
-        enclosed = shapely.polygonize([shapely.LineString(line) for line in lines]).geoms
+        enclosed = shapely.polygonize(lines).geoms
         return shapely.GeometryCollection(polygons + list(enclosed))
     if len(polygons) == 1 and not lines:
         return polygons[0]
     if polygons and not lines:
         return shapely.MultiPolygon(polygons)
     if len(lines) == 1 and not polygons:
-        return shapely.LineString(lines[0])
+        return lines[0]
     if lines and not polygons:
         return shapely.MultiLineString(lines)
     if not polygons and not lines:
         return shapely.LineString()
-    return shapely.GeometryCollection(polygons + [shapely.LineString(line) for line in lines])
+    return shapely.GeometryCollection(polygons + lines)
 
 
 def from_shapely(geometry: object) -> Coordinates:

@@ -281,9 +281,9 @@ def test_pickle_is_compact_numpy_arrays():
     # points (16 B), edges (16 B) and the loop (8 B) per point, plus a few kB of framing:
     # about half the bound of twice that, and far below a pickle of Python lists.
     assert size < n * (16 + 16 + 8) + 4096, f"pickle of {n} points is {size} bytes"
-    constructor, (points, fields, index, crs) = rec.__reduce__()
+    constructor, (points, fields, index, crs, lon_lat) = rec.__reduce__()
     assert constructor is sigdt.Reconstruction and isinstance(points, np.ndarray)
-    assert index is None and crs is None
+    assert index is None and crs is None and lon_lat is False
     arrays = [v for v in fields.values() if isinstance(v, np.ndarray)]
     assert len(arrays) == 7 and all(isinstance(a, np.ndarray) for a in arrays)
     assert all(a.dtype == np.int64 for a in arrays)

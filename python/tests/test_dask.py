@@ -20,7 +20,9 @@ The recipe (a LocalCluster stands in for a real cluster; on one, connect with
 
 ``sigdt.reconstruct`` is a plain module-level function of a numpy array and
 ``Reconstruction`` pickles compactly (numpy arrays), so both travel between processes.
-The results equal the serial ``[sigdt.reconstruct(p) for p in point_sets]``.
+The results equal the serial ``[sigdt.reconstruct(p) for p in point_sets]``. A
+``dask_geopandas.GeoDataFrame`` goes to ``sigdt.reconstruct_frame(frame, by=COLUMN)`` whole: it
+is shuffled by the group column and reconstructed partition by partition on the workers.
 """
 
 from __future__ import annotations
@@ -100,3 +102,57 @@ def test_chunked_reconstruct_many_equals_the_serial_path(client, point_sets, ser
 
     results = db.from_sequence(point_sets, npartitions=8).map_partitions(chunk).compute()
     assert results == serial
+
+
+def test_reconstruct_frame_on_a_dask_geodataframe_gives_the_pandas_rows(client):
+    """Issue 46: 10⁴ groups (seeded blobs, a few of two points, one off the map) as a
+    dask_geopandas frame over 7 partitions, shuffled by the group column on two workers."""
+    import dask_geopandas
+    import geopandas as gpd
+    import pandas as pd
+    import shapely
+
+    rng = np.random.default_rng(46)
+    parts, groups = [], []
+    for g in range(10_000):
+        n = 3 if g % 997 == 0 else int(rng.integers(8, 20))
+        t = np.sort(rng.uniform(0, 2 * np.pi, n))
+        centre = rng.uniform(-170, 170), rng.uniform(-60, 60)
+        parts.append(np.c_[centre[0] + 0.01 * np.cos(t), centre[1] + 0.01 * np.sin(t)])
+        groups += [f"g{g:05d}"] * n
+    points = np.concatenate(parts)
+    points[0] = [-180.0015, 0.0]  # group g00000 is off the map: a row with status "error"
+    frame = gpd.GeoDataFrame(
+        {"group": groups, "rank": np.arange(len(points)) % 5},
+        geometry=shapely.points(points),
+        crs="EPSG:4326",
+    ).sample(frac=1.0, random_state=1)  # rows of a group scattered over the partitions
+    points = dask_geopandas.from_geopandas(frame, npartitions=7)
+    # The pandas path on the same frame: from_geopandas sorts the rows by their index.
+    with pytest.warns(sigdt.SigdtWarning, match="1 of 10000 groups failed"):
+        expected = sigdt.reconstruct_frame(points.compute(), by="group", progress=False)
+    lazy = sigdt.reconstruct_frame(points, by="group")
+    assert type(lazy).__module__.startswith("dask_geopandas")
+    got = lazy.compute().sort_index()
+    assert len(got) == 10_000 and got.crs == expected.crs
+    assert got.loc["g00000", "status"] == "error"
+    assert "-180.0015" in got.loc["g00000", "diagnosis"]
+    pd.testing.assert_frame_equal(
+        got.drop(columns=["geometry", "paths", "networks"]),
+        expected.drop(columns=["geometry", "paths", "networks"]),
+    )
+    for column in ["geometry", "paths", "networks"]:
+        assert shapely.equals_exact(got[column].values, expected[column].values, 0).all(), column
+
+
+def test_a_dask_frame_needs_a_group_column():
+    import dask_geopandas
+    import geopandas as gpd
+    import shapely
+
+    frame = gpd.GeoDataFrame({"g": [1] * 4}, geometry=shapely.points(np.eye(4, 2)))
+    lazy = dask_geopandas.from_geopandas(frame, npartitions=1)
+    with pytest.raises(ValueError, match="needs by= naming the column"):
+        sigdt.reconstruct_frame(lazy)
+    with pytest.raises(ValueError, match="no column 'h' in the Dask frame"):
+        sigdt.reconstruct_frame(lazy, by="h")

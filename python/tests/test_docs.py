@@ -39,6 +39,7 @@ def test_the_public_functions_are_the_expected_ones():
         "from_shapely",
         "graph_epsilon",
         "graph_overlap",
+        "outlines",
         "plot_steps",
         "proximity_graph",
         "read_points",

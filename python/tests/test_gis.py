@@ -14,6 +14,7 @@ from pathlib import Path
 import geopandas as gpd
 import numpy as np
 import pandas as pd
+import pyogrio
 import pytest
 import shapely
 import sigdt
@@ -67,7 +68,12 @@ def test_degrees_that_are_not_degrees_are_refused() -> None:
         sigdt.reconstruct(points)
     frame = points.assign(g=["x"] * len(points))
     with pytest.raises(sigdt.InvalidInputError, match="^group 'x': the coordinate system is"):
-        sigdt.reconstruct_frame(frame, by="g", progress=False)
+        sigdt.reconstruct_frame(frame, by="g", progress=False, errors="raise")
+    # By default the group is a row saying so.
+    with pytest.warns(sigdt.SigdtWarning, match="1 of 1 groups failed"):
+        out = sigdt.reconstruct_frame(frame, by="g", progress=False)
+    assert out.loc["x", "status"] == "error"
+    assert "is not a longitude and a latitude" in out.loc["x", "diagnosis"]
 
 
 def test_reconstruct_frame_gives_one_row_per_group() -> None:
@@ -78,6 +84,8 @@ def test_reconstruct_frame_gives_one_row_per_group() -> None:
     assert list(frame.index) == ["a", "b"] and frame.index.name == "island"
     assert frame.crs.to_epsg() == 4326
     assert list(frame.columns) == [
+        "paths",
+        "networks",
         "status",
         "warning",
         "diagnosis",
@@ -88,7 +96,7 @@ def test_reconstruct_frame_gives_one_row_per_group() -> None:
     assert frame["status"].tolist() == ["polygon", "polygon"]
     assert frame["n_points"].tolist() == [245, 245]
     # Group b is the file's points: the same polygon as reconstructing them alone.
-    alone = sigdt.reconstruct(points).to_shapely()
+    alone = shapely.MultiPolygon([sigdt.reconstruct(points).to_shapely()])
     assert frame.geometry.loc["b"].equals(alone)
     whole = sigdt.reconstruct_frame(points, progress=False)
     assert len(whole) == 1 and whole.geometry.iloc[0].equals(alone)
@@ -129,21 +137,20 @@ def test_cli_geopackage_layers_read_back_with_their_crs(
 ) -> None:
     out = tmp_path / "result.gpkg"
     subprocess.run([str(cli), "reconstruct", str(GIS / given), "-o", str(out)], check=True)
-    curves = gpd.read_file(out, layer="curves")
-    assert curves.crs.to_epsg() == epsg
-    assert curves[["kind", "method", "status", "warning", "vertices"]].to_dict("records") == [
-        {
-            "kind": "polygon",
-            "method": "sig-auto",
-            "status": "polygon",
-            "warning": False,
-            "vertices": 245,
-        }
+    areas = gpd.read_file(out, layer="areas")
+    assert areas.crs.to_epsg() == epsg
+    assert areas[["method", "status", "warning", "vertices"]].to_dict("records") == [
+        {"method": "sig-auto", "status": "polygon", "warning": False, "vertices": 245}
     ]
     points = gpd.read_file(GIS / given)
-    assert curves.geometry.iloc[0].equals(sigdt.reconstruct(points).to_shapely())
-    left_out = gpd.read_file(out, layer="left_out")
-    assert len(left_out) == 0 and left_out.crs.to_epsg() == epsg
+    alone = shapely.MultiPolygon([sigdt.reconstruct(points).to_shapely()])
+    assert areas.geometry.iloc[0].equals(alone)
+    # Every layer is there, each with its one geometry type, the empty ones too.
+    types = {"paths": "MultiLineString", "networks": "MultiLineString", "left_out": "Point"}
+    for name, kind in types.items():
+        assert pyogrio.read_info(out, layer=name)["geometry_type"] == kind, name
+        layer = gpd.read_file(out, layer=name)
+        assert len(layer) == 0 and layer.crs == areas.crs, name
 
 
 def test_cli_flatgeobuf_with_outliers_carries_left_out_points(cli: Path, tmp_path: Path) -> None:
@@ -159,13 +166,18 @@ def test_cli_flatgeobuf_with_outliers_carries_left_out_points(cli: Path, tmp_pat
         check=True,
         capture_output=True,
     )
-    layer = gpd.read_file(out)
-    assert layer.crs.to_epsg() == 27700
-    curves = layer[layer["kind"] != "left-out"]
-    left = layer[layer["kind"] == "left-out"]
-    assert curves["kind"].tolist() == ["polygon"] and curves["method"].iloc[0] == "sig-auto"
+    # FlatGeobuf holds one layer a file: the areas in the file named, the others beside it.
+    areas = gpd.read_file(out)
+    assert areas.crs.to_epsg() == 27700 and areas.geom_type.tolist() == ["MultiPolygon"]
+    assert areas["method"].tolist() == ["sig-auto"]
+    left = gpd.read_file(tmp_path / "result.left_out.fgb")
+    assert left.crs.to_epsg() == 27700 and set(left.geom_type) == {"Point"}
     assert sorted(left["row"].astype(int)) == [245, 246, 247]
     assert set(left["reason"]) == {"outlier"}
+    for name in ["paths", "networks"]:
+        path = tmp_path / f"result.{name}.fgb"
+        assert pyogrio.read_info(path)["geometry_type"] == "MultiLineString", name
+        assert len(gpd.read_file(path)) == 0, name
 
 
 def test_read_points_reads_gis_files_and_layers() -> None:

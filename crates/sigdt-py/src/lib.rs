@@ -4,6 +4,7 @@
 //! only on the data at the call while the GIL is released); numpy arrays, dicts with named
 //! keys and the `Trace` class out; core errors to Python exceptions, panics to
 //! `InternalError`. The user-facing names, defaults and docstrings live in `python/sigdt`.
+mod antimeridian;
 mod convert;
 mod eval;
 mod interrupt;
@@ -108,7 +109,7 @@ fn pool(threads: usize) -> Result<Arc<rayon::ThreadPool>, String> {
 #[allow(clippy::too_many_arguments)]
 fn reconstruct_many<'py>(
     py: Python<'py>,
-    point_sets: Vec<PyReadonlyArray2<'py, f64>>,
+    point_sets: Vec<Bound<'py, PyAny>>,
     method: &str,
     leaf_elimination: bool,
     n_jobs: Option<usize>,
@@ -118,11 +119,15 @@ fn reconstruct_many<'py>(
 ) -> PyResult<Bound<'py, PyList>> {
     let options = options(method, leaf_elimination, expect)?;
     let method = options.method;
+    // One array borrowed at a time, copied and released: rust-numpy checks each new borrow
+    // against every live one of the same base array, so holding them all (views of one
+    // array, as Python's grouping passes) cost O(sets²).
     let sets = point_sets
         .iter()
         .enumerate()
         .map(|(k, a)| {
-            points(a)
+            a.extract::<PyReadonlyArray2<'py, f64>>()
+                .and_then(|array| points(&array))
                 .map_err(|e| InvalidInputError::new_err(format!("point set {k}: {}", e.value(py))))
         })
         .collect::<PyResult<Vec<_>>>()?;
@@ -313,6 +318,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(proximity_graph, m)?)?;
     m.add_function(wrap_pyfunction!(read_points, m)?)?;
     m.add_function(wrap_pyfunction!(place, m)?)?;
+    m.add_function(wrap_pyfunction!(antimeridian::split_polygon_at_antimeridian, m)?)?;
+    m.add_function(wrap_pyfunction!(antimeridian::split_line_at_antimeridian, m)?)?;
     m.add_function(wrap_pyfunction!(eval::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(eval::graph_epsilon, m)?)?;
     m.add_function(wrap_pyfunction!(eval::graph_overlap, m)?)?;
