@@ -11,7 +11,7 @@ DEMO := glyph_n_tilde
 # and apt-get, as on CI) through Python playwright; nothing is downloaded at run time.
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: browser all build cli-binary demo test test-long lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-networks data-outlines data-vertices wheel wheel-test man api-docs
+.PHONY: browser all build cli-binary demo test test-long lint rust-test doc bench cgal-delaunay bench-python report pictures clean py-build py-test py-lint data-non-manifold data-networks data-outlines data-vertices wheel wheel-test man api-docs qgis-plugin qgis-test
 
 # Python: a project-local virtualenv with the pinned dev dependencies.
 PYTHON ?= python3
@@ -102,6 +102,50 @@ wheel-test: wheel build
 	  --rootdir $(abspath .) $(abspath python/tests) --ignore $(abspath python/tests/test_viewer.py) \
 	  --ignore $(abspath python/tests/test_dask.py)
 	SIGDT_CLI=$(WHEEL_VENV)/bin/sigdt $(CARGO) test --locked --workspace --features sigdt/geo-types --test cli -q
+
+## qgis-plugin: the QGIS Processing plugin (qgis/sigdt_processing: "Outlines from points
+## (sigdt)", over the sigdt wheel, which it does not bundle) as target/qgis/sigdt_processing.zip,
+## the file QGIS's Plugins > Install from ZIP takes (qgis/README.md).
+QGIS_BUILD := $(abspath $(TARGET_DIR))/qgis
+qgis-plugin:
+	rm -rf $(QGIS_BUILD)/zip $(QGIS_BUILD)/sigdt_processing.zip
+	mkdir -p $(QGIS_BUILD)/zip
+	cp -r qgis/sigdt_processing $(QGIS_BUILD)/zip/
+	find $(QGIS_BUILD)/zip -name __pycache__ -prune -exec rm -rf {} +
+	cd $(QGIS_BUILD)/zip && $(PYTHON) -m zipfile -c ../sigdt_processing.zip sigdt_processing
+
+## qgis-test: the plugin in a real QGIS, headless (qgis/tests/, about half a minute):
+## qgis_process runs the algorithm on data/gis GeoPackages (degrees and metres, grouped and
+## not, a polygon layer, failing groups, sigdt missing) and QGIS reads the layers back;
+## progress and cancel run in QGIS's Python. Debian's QGIS (qgis, python3-qgis,
+## qgis-providers; 3.22 on Debian 12) is installed here if missing, which needs root and
+## apt-get, as on CI. The plugin is unpacked from the zip, and the wheel installed as the
+## plugin tells users to (pip --no-deps --target PROFILE/python: QGIS's own numpy), into a
+## throwaway QGIS home under target/qgis: the user's profile is never touched.
+QGIS_PYTHON ?= /usr/bin/python3
+# Debian 12's /usr/bin/qgis_process wrapper passes an option its 3.22 binary refuses
+# (qgis/QGIS#57683), so the binary itself runs.
+QGIS_PROCESS ?= /usr/bin/qgis_process.bin
+QGIS_PACKAGES := qgis python3-qgis qgis-providers python3-numpy
+QGIS_PROFILE_PYTHON := $(QGIS_BUILD)/home/.local/share/QGIS/QGIS3/profiles/default/python
+qgis-test: qgis-plugin wheel
+	@if [ ! -x $(QGIS_PROCESS) ] || ! $(QGIS_PYTHON) -c 'import qgis.core, numpy' 2>/dev/null; then \
+	  if command -v apt-get >/dev/null && [ "$$(id -u)" = 0 ]; then \
+	    echo "installing Debian's QGIS ($(QGIS_PACKAGES)) for the plugin's test"; \
+	    DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+	      $(QGIS_PACKAGES) >/dev/null; \
+	  else echo "QGIS is missing at $(QGIS_PROCESS): install Debian's QGIS (apt-get install --no-install-recommends $(QGIS_PACKAGES))" >&2; exit 1; fi; \
+	fi
+	rm -rf $(QGIS_BUILD)/plugins $(QGIS_BUILD)/home $(QGIS_BUILD)/bare-home $(QGIS_BUILD)/out
+	mkdir -p $(QGIS_BUILD)/plugins
+	cd $(QGIS_BUILD)/plugins && $(QGIS_PYTHON) -m zipfile -e ../sigdt_processing.zip .
+	$(VPY) -m pip install --quiet --disable-pip-version-check --no-deps \
+	  --target $(QGIS_PROFILE_PYTHON) $(WHEELS)/sigdt-*.whl
+	$(VENV)/bin/ruff check qgis
+	$(VENV)/bin/ruff format --check qgis
+	cd qgis/tests && QGIS_BUILD=$(QGIS_BUILD) QGIS_PROCESS=$(QGIS_PROCESS) \
+	  $(QGIS_PYTHON) -m unittest -v test_qgis_process test_feedback
 
 py-lint: $(VENV)/.installed
 	$(VENV)/bin/ruff check python
@@ -280,6 +324,7 @@ pictures: build py-build
 	$(SIGDT) render data/inputs/glyph_e_reversed.xy --method sig-connect2d --layers points,boundary \
 	  -o docs/images/steps-inflated.svg
 	$(VPY) python/bench/steps_figure.py data/inputs/glyph_e_reversed.xy docs/images/steps.png
+	$(VPY) python/bench/outlines_vs_concave_hull.py 0.1 docs/images/gis/outlines_vs_concave_hull.png
 	mkdir -p docs/images/sig-auto
 	for c in glyph_DejaVuSans_U0042 svgopen_Croco_path31_0_243 svg_manif_f5_path5_0_593 \
 	  glyphopen_DejaVuSerifCondensed-BoldItalic_U006E; do \
