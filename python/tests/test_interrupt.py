@@ -68,3 +68,41 @@ def test_evaluate_is_interrupted_promptly():
     latency = interrupted_after(0.3, lambda: sigdt.evaluate(points, polygon[:0], polygon))
     assert latency < 1.0, f"KeyboardInterrupt {latency:.2f} s after the signal"
     assert sigdt.evaluate(points[:4], polygon[:0], [[0, 1], [1, 2], [2, 3], [3, 0]])["missing"] == 4
+
+
+def test_reading_an_endless_geopackage_view_is_interrupted_and_stops(tmp_path):
+    """Issue 47, P3: read_points on a GeoPackage whose layer is an endless view ignored
+    Ctrl-C (the reader ran with the GIL released and never looked). The reader now runs on a
+    thread of its own and stops at the flag Ctrl-C sets."""
+    import sqlite3
+
+    path = tmp_path / "endless.gpkg"
+    db = sqlite3.connect(path)
+    db.executescript(
+        "CREATE TABLE gpkg_spatial_ref_sys (srs_name TEXT, srs_id INTEGER PRIMARY KEY, "
+        "organization TEXT, organization_coordsys_id INTEGER, definition TEXT);"
+        "CREATE TABLE gpkg_geometry_columns (table_name TEXT, column_name TEXT, "
+        "geometry_type_name TEXT, srs_id INTEGER, z INTEGER, m INTEGER);"
+        "INSERT INTO gpkg_geometry_columns VALUES ('endless', 'geom', 'POINT', 0, 0, 0);"
+        "CREATE VIEW endless AS WITH RECURSIVE n(i) AS (SELECT 1 UNION ALL SELECT i + 1 "
+        "FROM n) SELECT i AS fid, NULL AS geom FROM n WHERE i < 0;"
+    )
+    db.close()
+    # Work an earlier test interrupted may still be finishing on its thread: wait for it.
+    assert _idle_within(30.0), "the process never went idle before the test"
+    latency = interrupted_after(0.5, lambda: sigdt.read_points(path))
+    assert latency < 2.0, f"KeyboardInterrupt {latency:.2f} s after the signal"
+    # The reading thread saw the flag and ended: the process is idle again (a reader left
+    # running would burn a core: about 1 s of CPU a second).
+    assert _idle_within(5.0), "the reader went on after KeyboardInterrupt"
+
+
+def _idle_within(seconds: float) -> bool:
+    """Whether, within ``seconds``, the process spends a second using under 0.3 s of CPU."""
+    deadline = time.perf_counter() + seconds
+    while time.perf_counter() < deadline:
+        before = time.process_time()
+        time.sleep(1.0)
+        if time.process_time() - before < 0.3:
+            return True
+    return False

@@ -32,6 +32,7 @@
 //! `examples/outlines.rs` writes the outlines of a GeoPackage's points as a GeoPackage in
 //! their coordinate system.
 pub mod attributes;
+pub mod cancel;
 pub mod gis;
 pub mod read;
 mod stream;

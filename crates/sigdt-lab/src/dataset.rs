@@ -91,11 +91,18 @@ pub fn read_index(dir: &Path) -> Result<Vec<Case>> {
             return Err(error(line, format!("case '{name}' is listed twice")));
         }
         let number = |col: Option<usize>, what: &str| -> Result<Option<f64>> {
+            // Unknown is written as nothing or `-`; a NaN is more often a computation gone
+            // wrong than a choice (issue 47), so it is refused with the rest.
             match col.map(|c| fields[c].as_str()) {
-                None | Some("" | "-" | "nan" | "NaN") => Ok(None),
+                None | Some("" | "-") => Ok(None),
                 Some(text) => match text.parse::<f64>() {
                     Ok(v) if v.is_finite() && v >= 0.0 => Ok(Some(v)),
-                    _ => Err(error(line, format!("{what} '{text}' is not a number >= 0"))),
+                    _ => Err(error(
+                        line,
+                        format!(
+                            "{what} '{text}' is not a number >= 0 (write nothing or - if unknown)"
+                        ),
+                    )),
                 },
             }
         };
@@ -268,6 +275,10 @@ mod tests {
     fn errors_name_file_and_line() {
         let err = index("name,category,epsilon\na,manifold,x\n").unwrap_err().to_string();
         assert!(err.contains("index.csv:2:") && err.contains("'x'"), "{err}");
+        // Issue 47: a NaN is refused, not read as unknown.
+        let err = index("name,category,epsilon\na,open,\nb,manifold,nan\n").unwrap_err();
+        let err = err.to_string();
+        assert!(err.contains("index.csv:3:") && err.contains("epsilon 'nan'"), "{err}");
         let err = index("name,kind\n").unwrap_err().to_string();
         assert!(err.contains("index.csv:1:"), "{err}");
         let err = index("name,category\n../x,open\n").unwrap_err().to_string();

@@ -30,7 +30,7 @@ pub const DIRECT_POINTS: usize = 20_000;
 pub fn interruptible<T: Send + 'static>(
     py: Python<'_>,
     points: usize,
-    work: impl FnOnce(&AtomicBool) -> T + Send + 'static,
+    work: impl FnOnce(&Arc<AtomicBool>) -> T + Send + 'static,
 ) -> PyResult<T> {
     let cancel = Arc::new(AtomicBool::new(false));
     if points < DIRECT_POINTS {

@@ -70,7 +70,7 @@ fn reconstruct<'py>(
     let method = options.method;
     let pts = convert::points(&points)?;
     let n = pts.len();
-    let work = move |_: &AtomicBool| {
+    let work = move |_: &Arc<AtomicBool>| {
         guarded(move || match lon_lat {
             true => run(&pts, &options, true),
             // The copy is the call's own: freed once triangulated.
@@ -132,7 +132,7 @@ fn reconstruct_many<'py>(
         })
         .collect::<PyResult<Vec<_>>>()?;
     let total: usize = sets.iter().map(Vec::len).sum();
-    let work = move |cancel: &AtomicBool| {
+    let work = move |cancel: &Arc<AtomicBool>| {
         let all = || -> Vec<Result<anyhow::Result<sigdt::Reconstruction>, String>> {
             sets.par_iter()
                 .enumerate()
@@ -295,9 +295,14 @@ fn read_points<'py>(
     layer: Option<String>,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let max_points = max_points.unwrap_or(usize::MAX);
-    let read =
-        || sigdt_io::read_points_file(&path, columns.as_deref(), layer.as_deref(), max_points);
-    let pts = py.detach(read).map_err(|e| match e {
+    let read = move |cancel: &Arc<AtomicBool>| {
+        sigdt_io::cancel::cancellable(Arc::clone(cancel), || {
+            sigdt_io::read_points_file(&path, columns.as_deref(), layer.as_deref(), max_points)
+        })
+    };
+    // On a thread of its own (as many points as a file may hold), so that Ctrl-C raises at
+    // once and the reader, told by the flag, stops (a GeoPackage view may not end).
+    let pts = interruptible(py, usize::MAX, read)?.map_err(|e| match e {
         sigdt_io::Error::Io(io) => err(io),
         sigdt_io::Error::Usage(message) => PyValueError::new_err(message),
         sigdt_io::Error::Data(message) => ParseError::new_err(message),

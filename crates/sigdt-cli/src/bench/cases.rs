@@ -46,7 +46,7 @@ pub fn select(dir: &Path, categories: &[String], names: Option<&str>) -> Result<
 
 /// The `spacing` column of `index.csv` in `dir` (the spacing `s` the cases were sampled at),
 /// by case name; empty when there is no such column, and without the cases whose field is
-/// empty, `-` or `nan`.
+/// empty or `-` (unknown; a `nan` is an error, as for `epsilon`).
 ///
 /// [`dataset::Case`] keeps only the columns every labelled folder has, so the column is read
 /// here, from the file that [`select`] has already checked.
@@ -55,12 +55,16 @@ pub fn spacings(dir: &Path) -> Result<HashMap<String, f64>> {
     let mut out = HashMap::new();
     for (line, case, text) in column(dir, "spacing")? {
         match text.as_str() {
-            "" | "-" | "nan" | "NaN" => {}
+            "" | "-" => {}
             text => match text.parse::<f64>() {
                 Ok(s) if s.is_finite() && s > 0.0 => {
                     out.insert(case, s);
                 }
-                _ => bail!("{}:{line}: spacing '{text}' is not a number > 0", path.display()),
+                _ => bail!(
+                    "{}:{line}: spacing '{text}' is not a number > 0 (write nothing or - if \
+                     unknown)",
+                    path.display()
+                ),
             },
         }
     }

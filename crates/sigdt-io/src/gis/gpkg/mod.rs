@@ -12,7 +12,7 @@ use std::path::Path;
 use crate::text::quoted;
 use anyhow::{anyhow, bail, Context, Result};
 use rusqlite::types::ValueRef;
-use rusqlite::{Connection, OpenFlags, OptionalExtension};
+use rusqlite::{Connection, OptionalExtension};
 use sigdt::Point;
 
 use super::crs::Crs;
@@ -20,7 +20,12 @@ use super::layers::Layer;
 use super::wkb::read_vertices;
 use crate::attributes::{Column, ColumnType, Grouping, Value};
 
+mod budget;
+#[cfg(test)]
+mod hostile_tests;
 mod write;
+
+use budget::Budgeted;
 
 pub use write::write;
 
@@ -56,11 +61,19 @@ pub fn read_grouped(
     max: usize,
     by: Option<&str>,
 ) -> Result<Read> {
-    let flags = OpenFlags::SQLITE_OPEN_READ_ONLY | OpenFlags::SQLITE_OPEN_NO_MUTEX;
-    let db = Connection::open_with_flags(path, flags)
-        .with_context(|| format!("{name}: cannot open as a GeoPackage"))?;
-    let sql_error = |e: rusqlite::Error| anyhow!("{name}: not a readable GeoPackage: {e}");
-    let layers = feature_layers(&db).map_err(sql_error)?;
+    let budget =
+        Budgeted::open(path).with_context(|| format!("{name}: cannot open as a GeoPackage"))?;
+    let db = &budget.db;
+    // A query the budget stopped says which table and which budget; others are SQLite's.
+    let failed = |table: &str| query_error(&budget, name, table);
+    let sql_error = failed("gpkg_geometry_columns");
+    budget.row();
+    let layers = feature_layers(db).map_err(|e| match e {
+        rusqlite::Error::InvalidQuery => anyhow!(
+            "{name}: gpkg_geometry_columns lists more than {MAX_LAYERS} layers (an endless view?)"
+        ),
+        e => sql_error(e),
+    })?;
     let names = || layers.iter().map(|l| quoted(&l.table)).collect::<Vec<_>>().join(", ");
     let chosen = match layer {
         Some(wanted) => layers.iter().find(|l| l.table == wanted).ok_or_else(|| {
@@ -74,14 +87,15 @@ pub fn read_grouped(
             let points: Vec<_> = layers.iter().filter(|l| l.is_points()).collect();
             // An empty point layer beside others (sigdt's own `left_out` when nothing was left
             // out) is not what the user means to read.
-            let has_rows = |l: &FeatureTable| -> rusqlite::Result<bool> {
+            let has_rows = |l: &FeatureTable| -> Result<bool> {
                 let query = format!("SELECT EXISTS (SELECT 1 FROM {})", identifier(&l.table));
-                db.query_row(&query, [], |row| row.get(0))
+                budget.row();
+                db.query_row(&query, [], |row| row.get(0)).map_err(failed(&l.table))
             };
             match (layers.as_slice(), points.as_slice()) {
                 ([], _) => bail!("{name}: a GeoPackage without feature layers"),
                 ([only], _) => only,
-                (_, [only]) if has_rows(only).map_err(sql_error)? => *only,
+                (_, [only]) if has_rows(only)? => *only,
                 (_, [only]) => bail!(
                     "{name}: its only point layer, {}, is empty; choose one of its {} feature \
                      layers ({}) with --layer NAME",
@@ -97,15 +111,17 @@ pub fn read_grouped(
             }
         }
     };
-    let crs = match system(&db, chosen.srs_id) {
+    budget.row();
+    let crs = match system(db, chosen.srs_id) {
         Err(rusqlite::Error::QueryReturnedNoRows) => bail!(
             "{name}: layer {}: its srs_id {} has no row in gpkg_spatial_ref_sys, so its \
              coordinate system is unknown (add the row, or write the layer again with its system)",
             quoted(&chosen.table),
             chosen.srs_id
         ),
-        found => found.map_err(sql_error)?,
+        found => found.map_err(failed("gpkg_spatial_ref_sys"))?,
     };
+    let sql_error = failed(&chosen.table);
     // A feature view (the format allows them; GDAL writes them) has no rowid: its features
     // are numbered from 1 in the order the view gives them.
     let is_view: bool = db
@@ -114,13 +130,13 @@ pub fn read_grouped(
             [&chosen.table],
             |row| row.get(0),
         )
-        .map_err(sql_error)?;
+        .map_err(&sql_error)?;
     let fid = if is_view { "NULL".to_string() } else { identifier("rowid") };
     let table = quoted(&chosen.table);
     let mut grouping = match by {
         None => None,
         Some(by) => {
-            let columns = attribute_columns(&db, chosen).map_err(sql_error)?;
+            let columns = attribute_columns(db, chosen).map_err(&sql_error)?;
             let shown = format!("{name}: layer {table}");
             Some(Grouping::new(columns, by, &shown).map_err(|m| anyhow!(m))?)
         }
@@ -135,29 +151,60 @@ pub fn read_grouped(
         attributes.concat(),
         identifier(&chosen.table)
     );
-    let mut statement = db.prepare(&query).map_err(sql_error)?;
-    let mut rows = statement.query([]).map_err(sql_error)?;
+    let mut statement = db.prepare(&query).map_err(&sql_error)?;
+    budget.row();
+    let mut rows = statement.query([]).map_err(&sql_error)?;
     let mut points = Vec::new();
     let mut position = 0i64;
-    while let Some(row) = rows.next().map_err(sql_error)? {
+    // Rows without a point count against --max-points too, so that an endless view of rows
+    // without geometry stops (M2).
+    let mut empty_rows = 0usize;
+    while let Some(row) = rows.next().map_err(&sql_error)? {
+        budget.row();
         position += 1;
-        let fid: i64 = row.get::<_, Option<i64>>(0).map_err(sql_error)?.unwrap_or(position);
+        let fid: i64 = row.get::<_, Option<i64>>(0).map_err(&sql_error)?.unwrap_or(position);
         let blob: Option<Vec<u8>> = row.get(1).map_err(|e| {
             anyhow!("{name}: layer {table}, feature {fid}: the geometry is not a blob ({e})")
         })?;
-        let Some(blob) = blob else { continue };
         let before = points.len();
-        geometry_vertices(&blob, &mut points, max)
-            .map_err(|why| anyhow!("{name}: layer {table}, feature {fid}: {why}"))?;
+        if let Some(blob) = &blob {
+            geometry_vertices(blob, &mut points, max.saturating_sub(empty_rows))
+                .map_err(|why| anyhow!("{name}: layer {table}, feature {fid}: {why}"))?;
+        }
+        if points.len() == before {
+            empty_rows += 1;
+            if points.len() + empty_rows > max {
+                bail!(
+                    "{name}: layer {table}: more than {max} points and rows without one \
+                     (--max-points {max}); is the layer an endless view?"
+                );
+            }
+            if blob.is_none() {
+                continue;
+            }
+        }
         if let Some(grouping) = &mut grouping {
             let values = (0..grouping.columns.len())
                 .map(|c| value(row.get_ref(2 + c)?, grouping.columns[c].kind))
                 .collect::<rusqlite::Result<Vec<Value>>>()
-                .map_err(sql_error)?;
+                .map_err(&sql_error)?;
             grouping.add(values, points.len() - before);
         }
     }
     Ok(Read { points, crs, layer: chosen.table.clone(), grouping })
+}
+
+/// What a failed query on `table` says: the budget that stopped it, or SQLite's error.
+fn query_error<'a>(
+    budget: &'a Budgeted,
+    name: &'a str,
+    table: &str,
+) -> impl Fn(rusqlite::Error) -> anyhow::Error + 'a {
+    let table = quoted(table);
+    move |e: rusqlite::Error| match budget.stopped(&e) {
+        Some(stop) => anyhow!("{name}: reading {table}: {}", stop.explain(&budget.limits)),
+        None => anyhow!("{name}: not a readable GeoPackage: {e}"),
+    }
 }
 
 /// The layers of the GeoPackage at `path` that sigdt would not write itself (every table
@@ -166,8 +213,8 @@ pub fn read_grouped(
 /// a user's layers; empty when `path` is not a readable SQLite file (a file of another kind
 /// is the caller's to refuse or replace).
 pub fn foreign_tables(path: &Path) -> Vec<String> {
-    let flags = OpenFlags::SQLITE_OPEN_READ_ONLY | OpenFlags::SQLITE_OPEN_NO_MUTEX;
-    let Ok(db) = Connection::open_with_flags(path, flags) else { return Vec::new() };
+    let Ok(budget) = Budgeted::open(path) else { return Vec::new() };
+    let db = &budget.db;
     let query = "SELECT name FROM sqlite_master WHERE type IN ('table', 'view') ORDER BY name";
     let names = db.prepare(query).and_then(|mut statement| {
         statement
@@ -198,6 +245,9 @@ impl FeatureTable {
     }
 }
 
+/// The most feature layers a GeoPackage may list: its list may be a view of any length.
+const MAX_LAYERS: usize = 100_000;
+
 fn feature_layers(db: &Connection) -> rusqlite::Result<Vec<FeatureTable>> {
     let mut statement = db.prepare(
         "SELECT table_name, column_name, geometry_type_name, srs_id FROM gpkg_geometry_columns \
@@ -211,7 +261,14 @@ fn feature_layers(db: &Connection) -> rusqlite::Result<Vec<FeatureTable>> {
             srs_id: row.get(3)?,
         })
     })?;
-    layers.collect()
+    let mut out = Vec::new();
+    for layer in layers {
+        if out.len() == MAX_LAYERS {
+            return Err(rusqlite::Error::InvalidQuery); // read as "too many layers" below
+        }
+        out.push(layer?);
+    }
+    Ok(out)
 }
 
 /// The attribute columns of `layer`: every column but the geometry, the feature id (an

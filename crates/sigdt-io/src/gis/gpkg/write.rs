@@ -146,7 +146,7 @@ fn row(geometry: Vec<u8>, group: &Group, vertices: Option<usize>) -> Vec<Box<dyn
 }
 
 /// The tables every GeoPackage has (with two of the three systems it must define; WGS 84 is
-/// added with [`WGS84_WKT`]); the feature tables of a result are created by [`write`].
+/// added with [`WGS84_WKT`]); the feature tables of a result are created by [`write()`].
 const SCHEMA: &str = r#"
 PRAGMA application_id = 1196444487;
 PRAGMA user_version = 10400;

@@ -113,7 +113,7 @@ pub fn write_reconstruction_with<W: Write>(
 
 /// [`write_reconstruction_with`] for `points` that are longitude and latitude in degrees:
 /// the GeoJSON geometry (RFC 7946, §3.1.9) is cut at the antimeridian, its loops grouped in
-/// a local plane ([`outlines`](crate::gis::outlines::outlines)); the other formats are
+/// a local plane ([`outlines`]); the other formats are
 /// written as by [`write_reconstruction_with`].
 pub fn write_reconstruction_lon_lat<W: Write>(
     w: W,
