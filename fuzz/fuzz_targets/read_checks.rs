@@ -63,8 +63,18 @@ fn known_allowed() -> bool {
 
 /// Reads `bytes` named `name` with `columns` and checks the answer; `known` marks the
 /// messages of known findings. See the module docs.
+#[allow(dead_code)] // read_gpkg reads whole files through check_result
 pub fn check(bytes: &[u8], name: &str, columns: Option<&str>, known: &[&str]) {
-    match sigdt_io::read_points_bytes(bytes, name, columns, MAX_POINTS) {
+    check_result(sigdt_io::read_points_bytes(bytes, name, columns, MAX_POINTS), name, known);
+}
+
+/// Checks a reader's answer for the input named `name` (module docs).
+pub fn check_result(
+    read: Result<Vec<[f64; 2]>, sigdt_io::Error>,
+    name: &str,
+    known: &[&str],
+) {
+    match read {
         Ok(points) => {
             assert!(points.len() <= MAX_POINTS, "{} points, over the limit", points.len());
             assert!(

@@ -23,6 +23,7 @@ mod gis_output;
 mod groups;
 mod input;
 mod labelled;
+mod memory;
 mod messages;
 mod methods;
 mod output;

@@ -225,6 +225,26 @@ pub fn read_points_file(
     Ok(read_file(path, &options)?.points)
 }
 
+/// The points of the GeoPackage `bytes` named `name` (written to a temporary file, since
+/// SQLite reads files), on a small query budget (10⁷ SQLite steps between rows, 64 MiB):
+/// for the fuzz target of the GeoPackage reader.
+#[doc(hidden)]
+pub fn read_geopackage_bytes(
+    bytes: &[u8],
+    name: &str,
+    max_points: usize,
+) -> Result<Vec<Point>, Error> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static NEXT: AtomicUsize = AtomicUsize::new(0);
+    let k = NEXT.fetch_add(1, Ordering::Relaxed);
+    let path = std::env::temp_dir().join(format!("sigdt-fuzz-{}-{k}.gpkg", std::process::id()));
+    std::fs::write(&path, bytes).map_err(|e| Error::Data(format!("{name}: {e}")))?;
+    let limits = gis::gpkg::Limits { steps_per_row: 10_000_000, memory: 64 << 20 };
+    let read = gis::gpkg::read_on_budget(&path, name, None, max_points, None, limits);
+    let _ = std::fs::remove_file(&path);
+    Ok(read?.points)
+}
+
 /// [`read_points_file`] of `bytes` named `name` (whose extension chooses the reader as a
 /// file's would): for the fuzz targets of the readers.
 #[doc(hidden)]

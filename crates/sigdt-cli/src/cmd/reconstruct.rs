@@ -157,6 +157,8 @@ pub fn run(args: &ReconstructArgs, input: &Input) -> Result<()> {
         return by_groups(args, &options, points, grouping, degrees.as_deref(), &read_as)
             .and_then(|layers| write_layers(files, &layers, crs.as_ref(), args.verbose));
     }
+    let name = args.input.display().to_string();
+    crate::memory::check(&name, points.len(), crate::memory::Cost::Reconstruct)?;
     let start = Instant::now();
     // Edges and loops are indices: the points can go once triangulated (less peak memory).
     let indices_only = matches!(format, OutputFormat::Text(TextFormat::Edges | TextFormat::Loops));

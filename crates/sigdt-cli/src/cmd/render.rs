@@ -89,6 +89,8 @@ pub fn run(args: &RenderArgs, input: &Input) -> Result<()> {
     progress.stage(format!("reading {}", args.input.display()));
     let points = input.plane_points(&args.input, "render")?;
     too_many_to_draw(&args.input, points.len())?;
+    let name = args.input.display().to_string();
+    crate::memory::check(&name, points.len(), crate::memory::Cost::Render)?;
     let gt = ground_truth(args.gt.as_deref(), points.len())?;
     let mut wanted = args.layers.clone();
     if wanted.is_empty() {

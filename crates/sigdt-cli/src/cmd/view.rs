@@ -59,6 +59,8 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
     progress.stage(format!("reading {}", args.input.display()));
     let points = input.plane_points(&args.input, "view")?;
     too_many_to_view(&args.input, points.len())?;
+    let name = args.input.display().to_string();
+    crate::memory::check(&name, points.len(), crate::memory::Cost::View)?;
     let gt = ground_truth(args.gt.as_deref(), points.len())?;
     // One triangulation serves the reconstruction, the graphs and the SIG radii.
     progress.stage(format!("triangulating {} points", thousands(points.len())));

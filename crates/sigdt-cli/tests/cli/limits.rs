@@ -66,3 +66,31 @@ fn a_gtn_file_stops_at_the_first_point_past_its_header() {
     sigdt_in(dir.path(), &["reconstruct", "p.gtn"], None)
         .error(&["p.gtn:4:", "header says 2 points, but the file goes on past them"]);
 }
+
+#[test]
+#[cfg(target_os = "linux")]
+fn a_run_that_cannot_fit_under_ulimit_v_is_refused_not_aborted() {
+    // Issue 47, S3: under the address-space limit every command aborted (SIGABRT, "memory
+    // allocation of N bytes failed", a backtrace); `view` of 10⁶ points in 512 MB among them.
+    let dir = tempdir();
+    let points: Vec<[f64; 2]> = (0..600_000)
+        .map(|k| [(k % 1000) as f64 + 0.5 * ((k / 1000) % 2) as f64, (k / 1000) as f64])
+        .collect();
+    write_points(dir.path(), "many.xy", &points);
+    let command = sigdt_command();
+    let program = command.get_program().to_owned();
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 409600 && exec \"$0\" \"$@\"")
+        .arg(program)
+        .args(command.get_args())
+        .args(["view", "many.xy", "-o", "v.html"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("600000 points need at least 447 MB of memory"), "{stderr}");
+    assert!(stderr.contains("ulimit -v") && stderr.lines().count() == 1, "{stderr}");
+    assert!(!dir.path().join("v.html").exists());
+}

@@ -28,6 +28,10 @@ pub const MAGIC: &[u8] = b"fgb\x03fgb";
 /// The largest header read (the `flatgeobuf` crate's own limit).
 const MAX_HEADER: usize = 10 << 20;
 
+/// The most bytes a feature may hold besides its coordinates (attributes, lengths, the
+/// FlatBuffers tables).
+const MAX_ATTRIBUTES: usize = 16 << 20;
+
 /// Points of a FlatGeobuf file and its system.
 pub struct FgbPoints {
     /// Every vertex of every feature, in the file's order.
@@ -93,7 +97,13 @@ pub fn read_grouped(
     };
     let mut points = Vec::new();
     for number in 1.. {
-        let bytes = match size_prefixed(&mut reader, usize::MAX) {
+        // Counted before the bytes are buffered (issue 47, B2: a 2 MB .fgb.gz announcing one
+        // 2 GB feature was buffered whole under --max-points 1000): a feature can need at
+        // most 32 bytes a point (x, y, z, m) for the points still allowed, and some room for
+        // its attributes.
+        let room =
+            max.saturating_sub(points.len()).saturating_mul(32).saturating_add(MAX_ATTRIBUTES);
+        let bytes = match size_prefixed(&mut reader, room) {
             Ok(bytes) => bytes,
             Err(Framing::End) => {
                 let declared = header.features_count();
@@ -112,7 +122,13 @@ pub fn read_grouped(
                 break;
             }
             Err(Framing::Cut) => return Err(cut(&format!("feature {number}"))),
-            Err(Framing::TooLarge(_)) => unreachable!("no limit"),
+            Err(Framing::TooLarge(size)) => bail!(
+                "{name}: FlatGeobuf: feature {number} announces {size} bytes, more than \
+                 {} points (the --max-points {max} left, 32 bytes each) and {} MiB of \
+                 attributes can need",
+                max - points.len().min(max),
+                MAX_ATTRIBUTES >> 20
+            ),
             Err(Framing::Io(e)) => bail!("{name}: cannot read: {e}"),
         };
         let feature = size_prefixed_root_as_feature(&bytes)
@@ -308,5 +324,23 @@ mod tests {
         let err = err.to_string();
         assert!(err.contains("features, more than the"), "{err}");
         assert!(err.contains("its header declares"), "{err}");
+    }
+
+    #[test]
+    fn a_feature_past_the_limit_is_refused_before_its_bytes_are_read() {
+        // Issue 47, B2: a 2 MB .fgb.gz announcing one 2 GB feature was buffered whole before
+        // a point was counted. A feature announcing 3 GB, of which no byte arrives: refused
+        // on its size, not by the end of the stream.
+        let mut bytes = one_feature_too_many();
+        let prefix = |b: &[u8], at: usize| u32::from_le_bytes(b[at..at + 4].try_into().unwrap());
+        let first = 8 + 4 + prefix(&bytes, 8) as usize;
+        bytes.truncate(first);
+        bytes.extend(3_000_000_000u32.to_le_bytes());
+        let Err(err) = read(&bytes[..], "a.fgb", 1000) else { panic!("read") };
+        assert_eq!(
+            err.to_string(),
+            "a.fgb: FlatGeobuf: feature 1 announces 3000000000 bytes, more than 1000 points (the \
+             --max-points 1000 left, 32 bytes each) and 16 MiB of attributes can need"
+        );
     }
 }

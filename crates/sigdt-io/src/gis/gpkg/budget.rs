@@ -30,7 +30,7 @@ pub const STEP: i32 = 10_000;
 pub const STEPS_PER_ROW: u64 = 1_000_000_000;
 
 /// The most memory SQLite may hold while a query runs (sorts, temporary tables, caches).
-pub const MEMORY: i64 = 1 << 30;
+pub const MEMORY: i64 = 512 << 20;
 
 /// The budget of one query (module docs).
 #[derive(Debug, Clone, Copy)]

@@ -20,12 +20,13 @@ use super::layers::Layer;
 use super::wkb::read_vertices;
 use crate::attributes::{Column, ColumnType, Grouping, Value};
 
-mod budget;
+pub mod budget;
 #[cfg(test)]
 mod hostile_tests;
 mod write;
 
 use budget::Budgeted;
+pub use budget::Limits;
 
 pub use write::write;
 
@@ -61,8 +62,22 @@ pub fn read_grouped(
     max: usize,
     by: Option<&str>,
 ) -> Result<Read> {
-    let budget =
-        Budgeted::open(path).with_context(|| format!("{name}: cannot open as a GeoPackage"))?;
+    read_on_budget(path, name, layer, max, by, Limits::default())
+}
+
+/// [`read`] on the query budget `limits` ([`budget`]): for the fuzz target, whose files
+/// must fail fast.
+#[doc(hidden)]
+pub fn read_on_budget(
+    path: &Path,
+    name: &str,
+    layer: Option<&str>,
+    max: usize,
+    by: Option<&str>,
+    limits: Limits,
+) -> Result<Read> {
+    let budget = Budgeted::open_with(path, limits)
+        .with_context(|| format!("{name}: cannot open as a GeoPackage"))?;
     let db = &budget.db;
     // A query the budget stopped says which table and which budget; others are SQLite's.
     let failed = |table: &str| query_error(&budget, name, table);
