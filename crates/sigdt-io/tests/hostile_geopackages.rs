@@ -60,3 +60,12 @@ fn a_write_ahead_log_file_is_read_without_files_beside_it() {
         std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name()).collect();
     assert_eq!(beside, ["wal.gpkg"]);
 }
+
+#[test]
+fn sqlite_quoting_the_schema_puts_no_control_character_in_the_message() {
+    // Found by the fuzz target: a damaged schema made SQLite's reason quote a control
+    // character ("unrecognized token: \"\u{1}\"").
+    let err = read("crash-control-character-in-sqlite-reason").unwrap_err();
+    assert!(err.contains("not a readable GeoPackage"), "{err}");
+    assert!(!err.chars().any(char::is_control), "{err}");
+}

@@ -218,8 +218,33 @@ fn query_error<'a>(
     let table = quoted(table);
     move |e: rusqlite::Error| match budget.stopped(&e) {
         Some(stop) => anyhow!("{name}: reading {table}: {}", stop.explain(&budget.limits)),
-        None => anyhow!("{name}: not a readable GeoPackage: {e}"),
+        None => anyhow!("{name}: not a readable GeoPackage: {}", reason(&e)),
     }
+}
+
+/// The most characters of SQLite's reason a message shows.
+const REASON_CHARS: usize = 200;
+
+/// SQLite's reason for `e` as a message may show it: SQLite quotes the file's schema
+/// ("malformed database schema (T) - unrecognized token: ..."), so control and other
+/// invisible characters are escaped, as every reader escapes input, and it is cut after
+/// [`REASON_CHARS`] characters (a fuzzed schema put a control character on the terminal).
+fn reason(e: &rusqlite::Error) -> String {
+    let text = e.to_string();
+    let mut shown = String::new();
+    for (k, c) in text.chars().enumerate() {
+        if k == REASON_CHARS {
+            shown.push_str("...");
+            break;
+        }
+        match c {
+            c if c.is_control() || c.is_whitespace() && c != ' ' => {
+                shown.extend(c.escape_unicode())
+            }
+            c => shown.push(c),
+        }
+    }
+    shown
 }
 
 /// The layers of the GeoPackage at `path` that sigdt would not write itself (every table
