@@ -166,16 +166,19 @@ def many_areas(results: list[Any]) -> list[Any]:
     group_of: list[int] = []  # each polygon's group
     out = np.empty(len(results), dtype=object)
     for g, rec in enumerate(results):
-        if rec is None or not rec.loops:
+        # The loops straight from the result's flat arrays (rec.loops splits them anew).
+        offsets = None if rec is None else rec._fields["loop_offsets"]
+        if offsets is None or len(offsets) < 2:
             out[g] = _empty("areas")
         elif _split(rec):
             out[g] = areas(rec)
         else:
-            v, loops = rec.vertices, rec.loops
+            v, flat = rec.vertices, rec._fields["loop_vertices"]
             for shell, holes in rec.polygons:
                 for k in [shell, *holes]:
-                    coords.append(v[loops[k]])  # linearrings closes each ring
-                    ring_of.append(np.full(len(loops[k]), len(polygon_of)))
+                    loop = flat[offsets[k] : offsets[k + 1]]
+                    coords.append(v[loop])  # linearrings closes each ring
+                    ring_of.append(np.full(len(loop), len(polygon_of)))
                     polygon_of.append(len(group_of))
                 group_of.append(g)
     if group_of:

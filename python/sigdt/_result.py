@@ -247,6 +247,8 @@ class Reconstruction:
         >>> len(rec.loops), rec.polygons
         (2, [(0, [1])])
         """
+        if self._polygons is None and len(self._fields["loop_offsets"]) == 2:
+            self._polygons = [(0, [])]  # one loop is one shell: nothing to decide
         if self._polygons is None:
             # Longitude/latitude nest as in the local plane once unwrapped: a ring across
             # ±180° jumps by 360° in the stored degrees.
