@@ -9,6 +9,7 @@
 //! byte a character), whatever the `.cpg` says. Every size comes from the header and is
 //! checked against the bytes there are; the file is read record by record.
 
+use crate::text::quoted;
 use std::io::{BufReader, Read};
 use std::path::Path;
 
@@ -107,14 +108,16 @@ impl Dbf {
                 let raw = &record[f.offset..f.offset + f.length];
                 value(raw, f).map_err(|why| {
                     let name = f.column.as_ref().map_or("", |c| c.name.as_str());
-                    anyhow!("{shown}: dBASE record {number}, field '{name}': {why}")
+                    let name = crate::text::quoted(name);
+                    anyhow!("{shown}: dBASE record {number}, field {name}: {why}")
                 })
             })
             .collect()
     }
 }
 
-/// The value of field `f` stored as `raw`.
+/// The value of field `f` stored as `raw` (input quoted in messages, control characters
+/// escaped, as every reader quotes it).
 fn value(raw: &[u8], f: &Field) -> Result<Value, String> {
     let trimmed = text(raw).trim().to_string();
     if trimmed.is_empty() {
@@ -125,22 +128,22 @@ fn value(raw: &[u8], f: &Field) -> Result<Value, String> {
         b'D' if trimmed.len() == 8 && trimmed.bytes().all(|b| b.is_ascii_digit()) => {
             Value::Text(format!("{}-{}-{}", &trimmed[..4], &trimmed[4..6], &trimmed[6..]))
         }
-        b'D' => return Err(format!("'{trimmed}' is not a date YYYYMMDD")),
+        b'D' => return Err(format!("{} is not a date YYYYMMDD", quoted(&trimmed))),
         b'L' => match trimmed.as_bytes()[0].to_ascii_uppercase() {
             b'T' | b'Y' => Value::Bool(true),
             b'F' | b'N' => Value::Bool(false),
             b'?' => Value::Null,
-            _ => return Err(format!("'{trimmed}' is not a logical value")),
+            _ => return Err(format!("{} is not a logical value", quoted(&trimmed))),
         },
         // Overflow is written as asterisks.
         _ if trimmed.bytes().all(|b| b == b'*') => Value::Null,
         b'N' if f.decimals == 0 => match trimmed.parse::<i64>() {
             Ok(n) => Value::Integer(n),
-            Err(_) => return Err(format!("'{trimmed}' is not a whole number")),
+            Err(_) => return Err(format!("{} is not a whole number", quoted(&trimmed))),
         },
         _ => match trimmed.parse::<f64>() {
             Ok(x) if x.is_finite() => Value::Real(x),
-            _ => return Err(format!("'{trimmed}' is not a number")),
+            _ => return Err(format!("{} is not a number", quoted(&trimmed))),
         },
     })
 }
@@ -223,6 +226,12 @@ mod tests {
     #[test]
     fn a_bad_field_or_a_short_file_names_the_record() {
         let dir = tempfile::tempdir().unwrap();
+        // A control character in a field is escaped in the message, as every reader's is.
+        let bytes = dbf(&[("day", b'D', 8, 0)], &[&["\x1b[2J0101"]]);
+        std::fs::write(dir.path().join("a.dbf"), &bytes).unwrap();
+        let mut table = Dbf::beside(&dir.path().join("a.shp")).unwrap().unwrap();
+        let err = table.next_record().unwrap_err().to_string();
+        assert!(err.ends_with(r"field 'day': '\u{1b}[2J0101' is not a date YYYYMMDD"), "{err}");
         let bytes = dbf(&[("n", b'N', 4, 0)], &[&["12"], &["x1"]]);
         std::fs::write(dir.path().join("a.dbf"), &bytes).unwrap();
         let mut table = Dbf::beside(&dir.path().join("a.shp")).unwrap().unwrap();
