@@ -51,6 +51,9 @@ impl GisFiles {
                 for layer in Layer::ALL {
                     let path = layer_file(out, layer);
                     let output = Output::new(Some(&path), input)?;
+                    if layer != Layer::Areas {
+                        refuse_other_files(&path, layer)?;
+                    }
                     files.push(File { layer: Some(layer), shown: shown(&path), output });
                 }
                 Ok(GisFiles { files })
@@ -110,6 +113,25 @@ fn layer_file(out: &Path, layer: Layer) -> PathBuf {
     let mut name = stem;
     name.push(format!(".{}.fgb", layer.name()));
     out.with_file_name(name)
+}
+
+/// Refuses to write the layer file `path` the user did not name when something other than
+/// a FlatGeobuf file is there: `-o out.fgb` may replace an earlier run's `out.paths.fgb`,
+/// never a file of another kind that happens to have that name.
+fn refuse_other_files(path: &Path, layer: Layer) -> Result<()> {
+    let Ok(mut file) = std::fs::File::open(path) else { return Ok(()) };
+    let mut magic = [0u8; 3];
+    let is_flatgeobuf =
+        std::io::Read::read_exact(&mut file, &mut magic).is_ok() && magic == fgb::MAGIC[..3];
+    if !is_flatgeobuf {
+        bail!(
+            "{}: sigdt writes the {} layer there, beside -o, but it holds something other \
+             than a FlatGeobuf file: move it, or choose another -o",
+            path.display(),
+            layer.name()
+        );
+    }
+    Ok(())
 }
 
 /// Refuses to replace the GeoPackage `out` when it holds tables sigdt does not write: the

@@ -293,6 +293,20 @@ fn by_is_refused_where_it_cannot_be_written_or_found() {
     run(&["o.paths.fgb", "-o", "o.fgb", "--columns", "x,y"])
         .error(&["o.paths.fgb: output is the input file; refusing to overwrite it"]);
     assert!(!dir.path().join("o.fgb").exists(), "nothing written");
+    // A file of another kind where a layer file goes is the user's: not replaced.
+    run(&["t.csv", "--by", "island", "-o", "o.fgb"]).error(&[
+        "o.paths.fgb: sigdt writes the paths layer there, beside -o, but it holds something \
+         other than a FlatGeobuf file",
+    ]);
+    assert_eq!(
+        fs::read(dir.path().join("o.paths.fgb")).unwrap(),
+        fs::read(dir.path().join("t.csv")).unwrap()
+    );
+    assert!(!dir.path().join("o.fgb").exists(), "nothing written");
+    // An earlier run's layer files are replaced.
+    fs::remove_file(dir.path().join("o.paths.fgb")).unwrap();
+    run(&["t.csv", "--by", "island", "-o", "o.fgb"]).expect(0);
+    run(&["t.csv", "--by", "island", "-o", "o.fgb"]).expect(0);
 }
 
 /// `[lon, lat]` with the longitude brought into [-180, 180], as GIS files store it.
