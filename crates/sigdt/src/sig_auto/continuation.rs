@@ -65,13 +65,12 @@ pub(crate) fn continue_smoothly(reading: &mut Reading<'_>) {
             && reading.joined(c, d)
             && !reading.joined(a, c)
             && !reading.joined(b, d)
-            && respects_spacing(reading, a, b, c, d)
-            && !trades_sharp_turns(reading, a, b, c, d);
+            && respects_spacing(reading, a, b, c, d);
         if !valid {
             continue;
         }
         let now = gain_of(reading, a, b, c, d);
-        if now <= MIN_GAIN {
+        if trades_sharp_turns(reading, [a, b, c, d], now) || now <= MIN_GAIN {
             continue;
         }
         if now != gain {
@@ -120,29 +119,31 @@ impl Ord for Move {
 /// Pushes every improving move that removes the reading edge `ab`.
 fn push_moves(reading: &Reading<'_>, a: u32, b: u32, queue: &mut BinaryHeap<Move>) {
     let dt = reading.dt;
-    let sharp = |v: u32| reading.turns_more_than(v, MAX_SAMPLED_TURN.cos());
+    let cos_limit = MAX_SAMPLED_TURN.cos();
+    let sharp = |v: u32| reading.turns_more_than(v, cos_limit);
+    // Asked once per vertex rather than once per candidate: on a scatter nearly every
+    // vertex turns sharply and every one has candidates.
+    let sharp_ab = sharp(a) || sharp(b);
     for h in dt.incident(a) {
         let c = dt.other(h, a);
         if c == b || reading.joined(a, c) {
             continue;
         }
+        let sharp_abc = sharp_ab || sharp(c);
         for d in reading.neighbours(c) {
             if d == NONE || d == a || d == b || reading.joined(b, d) {
                 continue;
             }
             // A reading that turns no more than a sampled curve can at all four vertices
             // is left as it is.
-            if !(sharp(a) || sharp(b) || sharp(c) || sharp(d)) {
+            if !(sharp_abc || sharp(d)) {
                 continue;
             }
-            if !respects_spacing(reading, a, b, c, d)
-                || trades_sharp_turns(reading, a, b, c, d)
-                || !dt.has_edge(b, d)
-            {
+            if !respects_spacing(reading, a, b, c, d) || !dt.has_edge(b, d) {
                 continue;
             }
             let gain = gain_of(reading, a, b, c, d);
-            if gain > MIN_GAIN {
+            if gain > MIN_GAIN && !trades_sharp_turns(reading, [a, b, c, d], gain) {
                 queue.push(Move { gain, a, b, c, d });
             }
         }
@@ -168,20 +169,19 @@ fn respects_spacing(reading: &Reading<'_>, a: u32, b: u32, c: u32, d: u32) -> bo
     fits(a, b, c) && fits(c, d, a) && fits(b, a, d) && fits(d, c, b)
 }
 
-/// Whether the move makes one of its four vertices turn more than a sampled curve can where
-/// it did not before, and gains no more than one such turn. A move like that trades a turn a
+/// Whether the move, which gains `gain`, makes one of its four vertices turn more than a
+/// sampled curve can where it did not before, and gains no more than one such turn. A move like that trades a turn a
 /// sampled curve cannot make for another: cut across a neck about a spacing wide, a curve
 /// comes apart into two loops that each keep a corner at the cut. Two curves the graph
 /// merged turn sharply at all four ends of their two bridges and come apart smoothly, with a
 /// far larger gain.
-fn trades_sharp_turns(reading: &Reading<'_>, a: u32, b: u32, c: u32, d: u32) -> bool {
+fn trades_sharp_turns(reading: &Reading<'_>, [a, b, c, d]: [u32; 4], gain: f64) -> bool {
     let cos_limit = MAX_SAMPLED_TURN.cos();
     let sharpened = |v: u32, old: u32, new: u32| {
         let [x, y] = reading.neighbours(v);
         let slots = if x == old { [new, y] } else { [x, new] };
         !reading.turns_more_than(v, cos_limit) && reading.turns_more_than_with(v, slots, cos_limit)
     };
-    let sharpens =
-        sharpened(a, b, c) || sharpened(b, a, d) || sharpened(c, d, a) || sharpened(d, c, b);
-    sharpens && gain_of(reading, a, b, c, d) <= MAX_SAMPLED_TURN
+    gain <= MAX_SAMPLED_TURN
+        && (sharpened(a, b, c) || sharpened(b, a, d) || sharpened(c, d, a) || sharpened(d, c, b))
 }

@@ -8,6 +8,7 @@ use super::continuation::{self, MAX_SAMPLED_TURN};
 use super::junctions::Networks;
 use super::reading::Reading;
 use super::spanning_forests::Forests;
+use super::unchanged_components::UnchangedComponents;
 use super::{
     checked_network, finish, isolated, outliers, shorter_reading, Facts, Kind, Steps, MAX_ROUNDS,
 };
@@ -40,6 +41,8 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
     // The vertices of `dt` on networks' curves (`Networks::candidates`), asked for once a
     // spanning tree branches: no branch through them is an outlier.
     let mut on_networks: Option<Vec<bool>> = None;
+    // The last round's components, when it read their branches and was not the first.
+    let mut settled: Option<UnchangedComponents> = None;
     for round in 0..MAX_ROUNDS {
         let subset;
         let sub = if round == 0 {
@@ -60,6 +63,7 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
         };
         let read = match degenerate_result(sub) {
             Some(line) => {
+                settled = None;
                 Read { pairs: sub.line_edges().collect(), inside: Vec::new(), stats: line.stats }
             }
             None => {
@@ -72,6 +76,7 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
                 }
                 // Isolated pieces are left out first; the forests are built only without them.
                 let (found, forests) = if round == 0 && !isolated.is_empty() {
+                    settled = None;
                     (isolated.concat(), None)
                 } else {
                     let forests = Forests::new(sub, &spacing);
@@ -94,16 +99,30 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
                     }
                     let curve =
                         |v: u32| on_networks.as_ref().is_some_and(|on| on[whole(v) as usize]);
+                    let unchanged = |vertices: &[u32]| {
+                        settled
+                            .as_ref()
+                            .is_some_and(|s| s.unchanged(vertices.iter().map(|&v| whole(v))))
+                    };
                     let found = match far_off {
-                        true => branches_far_off(sub, &forests, curve, steps),
+                        true => branches_far_off(sub, &forests, curve, unchanged, steps),
                         false => Vec::new(),
                     };
+                    // Rounds after the first break ties alike, so the next can skip what
+                    // this one read unchanged.
+                    settled = (far_off && round > 0).then(|| {
+                        let components = forests.components().iter().map(|(c, _)| c.as_slice());
+                        UnchangedComponents::new(dt.num_vertices(), components, whole)
+                    });
                     (found, Some(forests))
                 };
                 match forests {
                     Some(forests) if found.is_empty() => read_components(sub, &forests, steps),
                     _ => {
                         relinked = None;
+                        if let Some(settled) = settled.as_mut() {
+                            settled.leave_out(sub, &found, whole);
+                        }
                         let gone: Vec<u32> = found.iter().map(|&v| whole(v)).collect();
                         outliers.extend(&gone);
                         let gone: std::collections::HashSet<u32> = gone.into_iter().collect();
@@ -129,10 +148,11 @@ pub(super) fn read(facts: &Facts) -> Reconstruction {
         let cut: Vec<u32> = match steps.detours {
             true => {
                 let curve = |v: u32| on_networks.as_ref().is_some_and(|on| on[whole(v) as usize]);
-                outliers::detour_outliers(&mut reading, curve, steps)
-                    .into_iter()
-                    .map(whole)
-                    .collect()
+                let cut = outliers::detour_outliers(&mut reading, curve, steps);
+                if let Some(settled) = settled.as_mut() {
+                    settled.leave_out(sub, &cut, whole);
+                }
+                cut.into_iter().map(whole).collect()
             }
             false => Vec::new(),
         };
@@ -189,18 +209,26 @@ struct Read {
 }
 
 /// The branches of every component's SIGDT2 spanning tree that are outliers.
+///
+/// Components that `unchanged` says the last round read as they are are skipped: it found
+/// no outlier in them (`unchanged_components`).
 fn branches_far_off(
     dt: &Triangulation,
     forests: &Forests,
     curve: impl Fn(u32) -> bool + Copy,
+    unchanged: impl Fn(&[u32]) -> bool,
     steps: &Steps,
 ) -> Vec<u32> {
     let tree = &forests.sigdt2;
     let mut found = Vec::new();
+    let mut scratch = None;
     for (vertices, branched) in forests.components() {
+        if unchanged(vertices) {
+            continue;
+        }
         if *branched {
-            let neighbours = |v: u32| tree.neighbours(v).to_vec();
-            found.extend(outliers::branch_outliers(dt, vertices, neighbours, curve, steps));
+            let scratch = scratch.get_or_insert_with(|| outliers::BranchScratch::new(dt));
+            found.extend(outliers::branch_outliers(dt, vertices, tree, curve, steps, scratch));
         } else {
             found.extend(outliers::chain_end_outliers(dt, &tree.walk(vertices), steps));
         }

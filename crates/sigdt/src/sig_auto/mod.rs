@@ -95,6 +95,8 @@ mod skipped_samples;
 mod spanning_forests;
 mod spur_path;
 mod steps;
+mod unchanged_components;
+mod vertex_marks;
 mod wired_outliers;
 
 use crate::delaunay::{Shape, Triangulation};

@@ -35,14 +35,46 @@
 //! first vertex within the spacing, so O(n · degree) per pass over the reading on curve
 //! input; a cut shortens the reading, so at most `n` cuts.
 use super::reading::{Reading, NONE};
+use super::spanning_forests::Tree;
+use super::vertex_marks::{VertexMap, VertexSet};
 use super::Steps;
 use crate::delaunay::Triangulation;
 use crate::geometry::{distance, ray_distance, segment_distance, squared_distance, Point};
 use crate::proximity::sigdt::TIE_SLACK;
-use std::collections::{HashMap, HashSet};
 
-/// The vertices of `vertices` (one component of `dt`, a tree with adjacency `neighbours`)
-/// that lie on branches far from the tree's main path (rule 1 of the module docs).
+/// Scratch space of [`branch_outliers`] over a triangulation's vertices, made once for all
+/// the components of a round.
+pub(crate) struct BranchScratch {
+    /// The (sub)tree each vertex is being read in, by an id unique over every call.
+    tree_of: VertexMap,
+    next_id: u32,
+    /// Position of each vertex on the main path of the tree being read.
+    position: VertexMap,
+    /// Vertices already in a branch.
+    in_branch: VertexSet,
+    /// Parent of each vertex reached by the search for the main path.
+    parent: VertexMap,
+    /// The members of the branch whose distance to the other points is measured.
+    members: VertexSet,
+}
+
+impl BranchScratch {
+    /// Scratch space for the vertices of `dt`.
+    pub(crate) fn new(dt: &Triangulation) -> BranchScratch {
+        let n = dt.num_vertices();
+        BranchScratch {
+            tree_of: VertexMap::new(n),
+            next_id: 0,
+            position: VertexMap::new(n),
+            in_branch: VertexSet::new(n),
+            parent: VertexMap::new(n),
+            members: VertexSet::new(n),
+        }
+    }
+}
+
+/// The vertices of `vertices` (one component of `dt`, a tree of `tree`) that lie on branches
+/// far from the tree's main path (rule 1 of the module docs).
 ///
 /// A branch that is kept (one of its vertices lies near the curve) is a tree of its own,
 /// and the rule is applied to it again: outliers can hang off a second curve that hangs
@@ -56,27 +88,29 @@ use std::collections::{HashMap, HashSet};
 pub(crate) fn branch_outliers(
     dt: &Triangulation,
     vertices: &[u32],
-    neighbours: impl Fn(u32) -> Vec<u32>,
+    tree: &Tree,
     curve: impl Fn(u32) -> bool,
     steps: &Steps,
+    scratch: &mut BranchScratch,
 ) -> Vec<u32> {
-    // `tree_of[v]` names the (sub)tree `v` is being read in; a subtree's members are the
-    // vertices of its branch, so its adjacency is the tree's restricted to them.
-    let mut tree_of: HashMap<u32, u32> = HashMap::with_capacity(vertices.len());
+    // A subtree's members are the vertices of its branch, so its adjacency is the tree's
+    // restricted to them.
     let mut outliers = Vec::new();
     let mut trees = vec![vertices.to_vec()];
-    let mut next_id = 0u32;
-    while let Some(tree) = trees.pop() {
-        let nested = next_id > 0;
-        let id = next_id;
-        next_id += 1;
-        tree_of.extend(tree.iter().map(|&v| (v, id)));
+    let first_id = scratch.next_id;
+    while let Some(members) = trees.pop() {
+        let nested = scratch.next_id > first_id;
+        let id = scratch.next_id;
+        scratch.next_id += 1;
+        members.iter().for_each(|&v| scratch.tree_of.set(v, id));
+        let BranchScratch { tree_of, position, in_branch, parent, members: set, .. } = scratch;
         let within = |v: u32| {
-            let mut ws = neighbours(v);
-            ws.retain(|w| tree_of.get(w) == Some(&id));
-            ws
+            let tree_of = &*tree_of;
+            tree.neighbours(v).iter().copied().filter(move |&w| tree_of.get(w) == Some(id))
         };
-        let (far, kept) = far_branches(dt, &tree, &within, &curve, nested, steps);
+        let path = main_path(dt, &members, &within, parent);
+        let search = Search { within: &within, curve: &curve, nested, steps };
+        let (far, kept) = far_branches(dt, &members, &path, search, position, in_branch, set);
         outliers.extend(far);
         trees.extend(kept.into_iter().filter(|b| b.len() >= OWN_CURVE_POINTS));
     }
@@ -84,22 +118,36 @@ pub(crate) fn branch_outliers(
     outliers
 }
 
-/// One level of [`branch_outliers`]: the vertices of the branches of the tree `vertices`
-/// that lie far from its main path (and, when `nested`, from every other point), and the
-/// branches kept.
-fn far_branches(
+/// What one level of [`branch_outliers`] reads a tree with.
+struct Search<'a, W, C> {
+    within: &'a W,
+    curve: &'a C,
+    nested: bool,
+    steps: &'a Steps,
+}
+
+/// One level of [`branch_outliers`]: the vertices of the branches off `path` (the main path
+/// of the tree `vertices`) that lie far from it (and, when nested, from every other point),
+/// and the branches kept.
+fn far_branches<W, I, C>(
     dt: &Triangulation,
     vertices: &[u32],
-    neighbours: &impl Fn(u32) -> Vec<u32>,
-    curve: &impl Fn(u32) -> bool,
-    nested: bool,
-    steps: &Steps,
-) -> (Vec<u32>, Vec<Vec<u32>>) {
-    let path = main_path(dt, vertices, neighbours);
-    let position: HashMap<u32, usize> = path.iter().enumerate().map(|(i, &v)| (v, i)).collect();
-    let mut in_branch: HashSet<u32> = HashSet::new();
+    path: &[u32],
+    search: Search<'_, W, C>,
+    position: &mut VertexMap,
+    in_branch: &mut VertexSet,
+    set: &mut VertexSet,
+) -> (Vec<u32>, Vec<Vec<u32>>)
+where
+    W: Fn(u32) -> I,
+    I: Iterator<Item = u32>,
+    C: Fn(u32) -> bool,
+{
+    position.clear();
+    path.iter().enumerate().for_each(|(i, &v)| position.set(v, i as u32));
+    in_branch.clear();
     let (mut outliers, mut kept) = (Vec::new(), Vec::new());
-    for &start in vertices.iter().filter(|v| !position.contains_key(v)) {
+    for &start in vertices.iter().filter(|&&v| position.get(v).is_none()) {
         if !in_branch.insert(start) {
             continue;
         }
@@ -110,9 +158,9 @@ fn far_branches(
         let mut k = 0;
         while k < members.len() {
             let v = members[k];
-            for w in neighbours(v) {
-                if let Some(&i) = position.get(&w) {
-                    anchor = Some(i);
+            for w in (search.within)(v) {
+                if let Some(i) = position.get(w) {
+                    anchor = Some(i as usize);
                     continue;
                 }
                 inner = inner.max(distance(dt.point(v), dt.point(w)));
@@ -123,8 +171,11 @@ fn far_branches(
             k += 1;
         }
         let Some(i) = anchor else { continue };
-        let branch = Branch { members: &members, inner, path: &path, at: i };
-        if !members.iter().any(|&v| curve(v)) && branch.is_far_off(dt, nested, steps) {
+        let branch = Branch { members: &members, inner, path, at: i };
+        let nested = search.nested.then_some(&mut *set);
+        if !members.iter().any(|&v| (search.curve)(v))
+            && branch.is_far_off(dt, nested, search.steps)
+        {
             outliers.extend(members);
         } else {
             kept.push(members);
@@ -149,7 +200,7 @@ pub(crate) fn chain_end_outliers(dt: &Triangulation, path: &[u32], steps: &Steps
                 .map(|e| distance(dt.point(e[0]), dt.point(e[1])))
                 .fold(0.0, f64::max);
             let branch = Branch { members, inner, path: &path[k..], at: 0 };
-            if branch.is_far_off(dt, false, steps) {
+            if branch.is_far_off(dt, None, steps) {
                 let mut outliers = members.to_vec();
                 outliers.sort_unstable();
                 return outliers;
@@ -204,8 +255,14 @@ struct Branch<'a> {
 impl Branch<'_> {
     /// Rule 1 of the module docs: every member farther than the spacing at the attachment
     /// vertex from the path edges there and their continuations, not a curve of its own,
-    /// and, `nested`, farther than twice the spacing from every other point.
-    fn is_far_off(&self, dt: &Triangulation, nested: bool, steps: &Steps) -> bool {
+    /// and, when `nested` (given scratch space for its members), farther than twice the
+    /// spacing from every other point.
+    fn is_far_off(
+        &self,
+        dt: &Triangulation,
+        nested: Option<&mut VertexSet>,
+        steps: &Steps,
+    ) -> bool {
         let (path, i) = (self.path, self.at);
         let a = path[i];
         let sides: Vec<u32> =
@@ -224,7 +281,7 @@ impl Branch<'_> {
         let far = |d: f64, ratio: f64| d > ratio * spacing * (1.0 + TIE_SLACK);
         spacing > 0.0
             && far(nearest, 1.0)
-            && (!nested || far(distance_to_others(dt, self.members), 2.0))
+            && nested.is_none_or(|set| far(distance_to_others(dt, self.members, set), 2.0))
             && !(steps.own_curves && own_curve(self.members.len(), self.inner, nearest))
     }
 }
@@ -232,12 +289,13 @@ impl Branch<'_> {
 /// The distance from the points `members` to the nearest other point. The closest pair
 /// between two point sets is a Delaunay edge (its diametral disk is empty), so the
 /// members' Delaunay edges suffice.
-fn distance_to_others(dt: &Triangulation, members: &[u32]) -> f64 {
-    let set: HashSet<u32> = members.iter().copied().collect();
+fn distance_to_others(dt: &Triangulation, members: &[u32], set: &mut VertexSet) -> f64 {
+    set.clear();
+    members.iter().for_each(|&v| _ = set.insert(v));
     let mut nearest = f64::INFINITY;
     for &o in members {
         for h in dt.outgoing(o) {
-            if !set.contains(&dt.dest(h)) {
+            if !set.contains(dt.dest(h)) {
                 nearest = nearest.min(dt.length(h));
             }
         }
@@ -266,33 +324,38 @@ fn own_curve(count: usize, inner: f64, off: f64) -> bool {
 const OWN_CURVE_POINTS: usize = 3;
 
 /// The longest path of the tree, by length: from the vertex farthest from `vertices[0]` to
-/// the vertex farthest from it.
-fn main_path(
+/// the vertex farthest from it (`neighbours` its adjacency; `parent` scratch space).
+fn main_path<W, I>(
     dt: &Triangulation,
     vertices: &[u32],
-    neighbours: &impl Fn(u32) -> Vec<u32>,
-) -> Vec<u32> {
-    let farthest = |from: u32| {
+    neighbours: &W,
+    parent: &mut VertexMap,
+) -> Vec<u32>
+where
+    W: Fn(u32) -> I,
+    I: Iterator<Item = u32>,
+{
+    let mut farthest = |from: u32| {
         let mut best = (0.0, from);
-        let mut parent = HashMap::from([(from, NONE)]);
+        parent.clear();
+        parent.set(from, NONE);
         let mut stack = vec![(from, 0.0)];
         while let Some((v, d)) = stack.pop() {
             if d > best.0 {
                 best = (d, v);
             }
             for w in neighbours(v) {
-                if let std::collections::hash_map::Entry::Vacant(slot) = parent.entry(w) {
-                    slot.insert(v);
+                if parent.insert_new(w, v) {
                     stack.push((w, d + distance(dt.point(v), dt.point(w))));
                 }
             }
         }
-        (best.1, parent)
+        best.1
     };
-    let (x, _) = farthest(vertices[0]);
-    let (y, parent) = farthest(x);
+    let x = farthest(vertices[0]);
+    let y = farthest(x);
     let mut path = vec![y];
-    while let Some(&p) = path.last().and_then(|v| parent.get(v)) {
+    while let Some(p) = path.last().and_then(|&v| parent.get(v)) {
         if p == NONE {
             break;
         }
