@@ -281,7 +281,7 @@ impl Branch<'_> {
         let far = |d: f64, ratio: f64| d > ratio * spacing * (1.0 + TIE_SLACK);
         spacing > 0.0
             && far(nearest, 1.0)
-            && nested.is_none_or(|set| far(distance_to_others(dt, self.members, set), 2.0))
+            && nested.map_or(true, |set| far(distance_to_others(dt, self.members, set), 2.0))
             && !(steps.own_curves && own_curve(self.members.len(), self.inner, nearest))
     }
 }
