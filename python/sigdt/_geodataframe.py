@@ -22,7 +22,8 @@ CURVE_COLUMNS = ["kind", "method", "status", "warning", "diagnosis", "n_vertices
 
 
 def _diagnosis(rec: Outlines) -> str:
-    return "; ".join(f["message"] for f in rec.diagnosis)
+    findings = rec.diagnosis
+    return "; ".join(f["message"] for f in findings) if findings else ""
 
 
 def to_geopandas(rec: Outlines) -> GeoDataFrame:

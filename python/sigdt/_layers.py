@@ -138,7 +138,7 @@ def networks(rec: Outlines) -> shapely.MultiLineString:
 
 def lines_of(rec: Outlines | None) -> tuple[Any, Any]:
     """:func:`paths` and :func:`networks` of ``rec`` at once (empty for ``None``)."""
-    if rec is None:
+    if rec is None or len(rec._fields["path_offsets"]) < 2:
         return _empty("lines"), _empty("lines")
     free, meeting = _paths_by_junction(rec)
     return _multi_lines(rec, free), _multi_lines(rec, meeting)
@@ -161,7 +161,7 @@ def many_areas(results: list[Any]) -> list[Any]:
     import shapely
 
     coords: list[np.ndarray] = []
-    ring_of: list[np.ndarray] = []  # each vertex's ring
+    ring_sizes: list[int] = []  # each ring's vertices
     polygon_of: list[int] = []  # each ring's polygon
     group_of: list[int] = []  # each polygon's group
     out = np.empty(len(results), dtype=object)
@@ -172,17 +172,23 @@ def many_areas(results: list[Any]) -> list[Any]:
             out[g] = _empty("areas")
         elif _split(rec):
             out[g] = areas(rec)
+        elif len(offsets) == 2:  # one loop: one shell, the common case of small groups
+            coords.append(rec.vertices[rec._fields["loop_vertices"]])
+            ring_sizes.append(len(coords[-1]))
+            polygon_of.append(len(group_of))
+            group_of.append(g)
         else:
             v, flat = rec.vertices, rec._fields["loop_vertices"]
             for shell, holes in rec.polygons:
                 for k in [shell, *holes]:
                     loop = flat[offsets[k] : offsets[k + 1]]
                     coords.append(v[loop])  # linearrings closes each ring
-                    ring_of.append(np.full(len(loop), len(polygon_of)))
+                    ring_sizes.append(len(loop))
                     polygon_of.append(len(group_of))
                 group_of.append(g)
     if group_of:
-        rings = shapely.linearrings(np.concatenate(coords), indices=np.concatenate(ring_of))
+        ring_of = np.repeat(np.arange(len(ring_sizes)), ring_sizes)  # each vertex's ring
+        rings = shapely.linearrings(np.concatenate(coords), indices=ring_of)
         polygons = shapely.polygons(rings, indices=np.asarray(polygon_of))
         # multipolygons wants every index from 0 to the largest: number the groups that
         # have polygons consecutively, then place them.
