@@ -17,6 +17,8 @@ from .errors import InvalidInputError
 
 if TYPE_CHECKING:  # pragma: no cover
     from geopandas import GeoDataFrame
+
+    from ._result import Reconstruction
 else:
     GeoDataFrame = Any
 
@@ -170,9 +172,7 @@ def _frame_of(results: list[Any], index: Any, crs: Any) -> GeoDataFrame:
     # One pass over the rows for every column: ten per group cost more than a small
     # group's reconstruction.
     columns = [
-        (ERROR, True, r.message, r.n_points, 0)
-        if isinstance(r, Failure)
-        else (r.status, r.warns, _diagnosis(r), len(r.points), len(r.left_out))
+        (ERROR, True, r.message, r.n_points, 0) if isinstance(r, Failure) else _row_of(r)
         for r in results
     ]
     status, warning, diagnosis, n_points, n_left_out = (
@@ -189,6 +189,14 @@ def _frame_of(results: list[Any], index: Any, crs: Any) -> GeoDataFrame:
     }
     areas = _layers.many_areas(done)
     return gpd.GeoDataFrame(rows, geometry=areas, crs=crs, index=index)
+
+
+def _row_of(rec: Reconstruction) -> tuple[Any, ...]:
+    """A reconstruction's status, warning, diagnosis, point and left-out counts, read from
+    the extension's fields (the properties cost more than the rest of a small group's row)."""
+    fields = rec._fields
+    counts = len(rec.points), len(fields["left_out"])
+    return fields["status"], fields["status_warns"], _diagnosis(rec), *counts
 
 
 def _groups_of(frame: Any, by: Any) -> tuple[list[Any], np.ndarray, np.ndarray, Any]:

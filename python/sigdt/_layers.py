@@ -165,16 +165,20 @@ def many_areas(results: list[Any]) -> list[Any]:
     polygon_of: list[int] = []  # each ring's polygon
     group_of: list[int] = []  # each polygon's group
     out = np.empty(len(results), dtype=object)
+    empty = _empty("areas")
     for g, rec in enumerate(results):
         # The loops straight from the result's flat arrays (rec.loops splits them anew).
-        offsets = None if rec is None else rec._fields["loop_offsets"]
+        fields = None if rec is None else rec._fields
+        offsets = None if fields is None else fields["loop_offsets"]
         if offsets is None or len(offsets) < 2:
-            out[g] = _empty("areas")
+            out[g] = empty
         elif _split(rec):
             out[g] = areas(rec)
         elif len(offsets) == 2:  # one loop: one shell, the common case of small groups
-            coords.append(rec.vertices[rec._fields["loop_vertices"]])
-            ring_sizes.append(len(coords[-1]))
+            positions = fields["positions"]
+            ring = (rec.points if positions is None else positions)[fields["loop_vertices"]]
+            coords.append(ring)
+            ring_sizes.append(len(ring))
             polygon_of.append(len(group_of))
             group_of.append(g)
         else:
