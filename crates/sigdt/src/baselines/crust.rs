@@ -97,12 +97,24 @@ pub fn crust(dt: &Triangulation) -> Vec<[u32; 2]> {
 /// Step 2: the samples (vertex `v` is sample `v`) and one circumcentre per triangle, both
 /// scaled by [`range_scale`], centre coordinates below spade's range rounded to 0.
 fn samples_and_centres(dt: &Triangulation) -> (Vec<Point>, Vec<Point>) {
-    let mut centres: Vec<Point> = (0..dt.num_triangles() as u32)
+    // Each triangle's corners from its smallest vertex on, the triangles in the order of
+    // those corners: the centres (their bits and their order, which decides the second
+    // triangulation's insertion order) depend on the triangles alone, not on where the
+    // triangulation stores them.
+    let mut corners: Vec<[u32; 3]> = (0..dt.num_triangles() as u32)
         .map(|t| {
-            let [a, b, c] = [3 * t, 3 * t + 1, 3 * t + 2].map(|h| dt.point(dt.origin(h)));
-            circumcentre(a, b, c)
+            let mut corners = [3 * t, 3 * t + 1, 3 * t + 2].map(|h| dt.origin(h));
+            let first = (0..3).min_by_key(|&k| corners[k]).unwrap_or(0);
+            corners.rotate_left(first);
+            corners
         })
         .collect();
+    corners.sort_unstable();
+    let mut centres: Vec<Point> = corners
+        .iter()
+        .map(|c| circumcentre(dt.point(c[0]), dt.point(c[1]), dt.point(c[2])))
+        .collect();
+    drop(corners);
     let scale = range_scale(dt, &centres);
     for w in &mut centres {
         for x in w.iter_mut() {
@@ -451,7 +463,12 @@ mod tests {
         let pts = [[-1.0, -1.0], [s * (1.0 + f64::EPSILON), s], [1.0, 1.0], [1.0, -1.0]];
         let dt = Triangulation::new(&pts).unwrap();
         let far = (0..dt.num_triangles() as u32).any(|t| {
-            let [a, b, c] = [3 * t, 3 * t + 1, 3 * t + 2].map(|h| dt.point(dt.origin(h)));
+            // From the smallest vertex on, so that the centre has the same bits wherever
+            // the triangle is stored and whichever corner it starts at.
+            let mut corners = [3 * t, 3 * t + 1, 3 * t + 2].map(|h| dt.origin(h));
+            let first = (0..3).min_by_key(|&k| corners[k]).unwrap_or(0);
+            corners.rotate_left(first);
+            let [a, b, c] = corners.map(|v| dt.point(v));
             circumcentre(a, b, c).iter().any(|x| x.abs() > MAX_ALLOWED)
         });
         assert!(far);

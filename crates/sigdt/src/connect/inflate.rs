@@ -56,10 +56,11 @@ pub fn inflate(bd: &mut Boundary<'_>, g: &EdgeMask, stats: &mut Stats) {
     }
     while bd.non_manifold > 0 {
         let Some(c) = queue.pop() else { break };
-        if bd.inside[c.t as usize] || !is_candidate(bd, c.t) || cost(bd, c.t) != c.cost {
+        let t = c.t;
+        if bd.inside[t as usize] || !is_candidate(bd, t) || cost(bd, t) != c.cost {
             continue;
         }
-        let (touched, filled) = accept(bd, c.t, stats);
+        let (touched, filled) = accept(bd, t, stats);
         // A triangle's cost reads its own edges and the labels across them, so it changes
         // only beside a triangle that turned interior; its candidacy changes only there or
         // at a vertex whose class changed. Exactly those are pushed again (their entries
@@ -96,11 +97,14 @@ fn is_candidate(bd: &Boundary<'_>, t: u32) -> bool {
     })
 }
 
-/// Change of total boundary length if `t` turns interior (edges in a fixed order, so the
-/// same triangle always gives the bit-identical cost).
+/// Change of total boundary length if `t` turns interior (edges in a fixed order, from its
+/// smallest vertex on, so the same triangle always gives the bit-identical cost wherever it
+/// is stored).
 fn cost(bd: &Boundary<'_>, t: u32) -> f64 {
+    let dt = bd.dt;
+    let first = (3 * t..3 * t + 3).min_by_key(|&h| dt.origin(h)).unwrap_or(3 * t);
     let mut delta = 0.0;
-    for h in 3 * t..3 * t + 3 {
+    for h in [first, next(first), prev(first)] {
         if !bd.edges.contains(h) {
             delta += bd.dt.length(h);
         } else if bd.right_is_in(h) {
@@ -118,7 +122,7 @@ fn push_around(bd: &Boundary<'_>, queue: &mut CandidateQueue, v: u32) {
 
 fn push_if_candidate(bd: &Boundary<'_>, queue: &mut CandidateQueue, t: u32) {
     if !bd.inside[t as usize] && is_candidate(bd, t) {
-        queue.push(t, cost(bd, t));
+        queue.push(bd.dt, t, cost(bd, t));
     }
 }
 

@@ -43,18 +43,19 @@ pub fn sculpt(bd: &mut Boundary<'_>, stats: &mut Stats) {
     if bd.interior > 0 {
         initial.extend(
             (0..bd.dt.num_triangles() as u32)
-                .filter_map(|t| candidate(bd, t).map(|(_, cost)| Candidate { cost, t })),
+                .filter_map(|t| candidate(bd, t).map(|(_, cost)| Candidate::new(bd.dt, t, cost))),
         );
     }
     let mut queue = CandidateQueue::from(initial);
     while bd.interior > 0 {
         let Some(c) = queue.pop() else { break };
-        let Some((ab, cost)) = candidate(bd, c.t) else { continue };
+        let t = c.t;
+        let Some((ab, cost)) = candidate(bd, t) else { continue };
         if cost != c.cost {
             continue;
         }
         let dt = bd.dt;
-        bd.set_inside(c.t, false, Phase::Sculpt);
+        bd.set_inside(t, false, Phase::Sculpt);
         bd.set_edge(ab, false);
         bd.set_edge(next(ab), true);
         bd.set_edge(prev(ab), true);
@@ -94,6 +95,6 @@ fn candidate(bd: &Boundary<'_>, t: u32) -> Option<(u32, f64)> {
 
 fn push_if_candidate(bd: &Boundary<'_>, queue: &mut CandidateQueue, t: u32) {
     if let Some((_, cost)) = candidate(bd, t) {
-        queue.push(t, cost);
+        queue.push(bd.dt, t, cost);
     }
 }

@@ -3,6 +3,7 @@
 use super::brio::canonical_order;
 use super::hygiene::Scaling;
 use super::incremental::Dt;
+use super::relabel::vertex_halfedges;
 use super::{Shape, Triangulation, EMPTY};
 use crate::error::{Error, Result};
 use crate::geometry::Edge;
@@ -120,13 +121,7 @@ fn proper(input: Cow<'_, [Point]>, scaling: Scaling, order: Vec<u32>) -> Result<
     input_index.truncate(dt.num_vertices);
     input_index.shrink_to_fit();
     let (points, triangles, halfedges) = dt.finish();
-    let mut vertex_halfedge = vec![EMPTY; points.len()];
-    for (h, &v) in triangles.iter().enumerate() {
-        let slot = &mut vertex_halfedge[v as usize];
-        if *slot == EMPTY || halfedges[h] == EMPTY {
-            *slot = h as u32;
-        }
-    }
+    let vertex_halfedge = vertex_halfedges(points.len(), &triangles, &halfedges);
     let mut duplicates: Vec<Edge> = later_duplicates
         .into_iter()
         .map(|(i, v)| [i as usize, input_index[v as usize] as usize])

@@ -30,6 +30,7 @@ pub(crate) mod check;
 pub(crate) mod hygiene;
 mod incremental;
 pub(crate) mod perturbation;
+mod relabel;
 
 use crate::geometry::Edge;
 use crate::geometry::{distance, Point};
