@@ -8,17 +8,10 @@
 use sigdt::samplers::{random_closed_curve, spiral_band, Rng};
 use sigdt::{reconstruct_on, Method, Options, Point, Triangulation};
 
-/// Smaller inputs in debug builds, to keep `cargo test` quick.
-fn scale(release: usize, debug: usize) -> usize {
-    if cfg!(debug_assertions) {
-        debug
-    } else {
-        release
-    }
-}
-
 /// Curves (clean, noisy, with outliers), a band, and inputs full of exact ties.
 fn inputs() -> Vec<(String, Vec<Point>)> {
+    // Smaller in debug builds, to keep `cargo test` quick.
+    let scale = |release: usize, debug: usize| if cfg!(debug_assertions) { debug } else { release };
     let mut sets = Vec::new();
     for seed in 0..2 {
         let n = scale(2000, 300);
