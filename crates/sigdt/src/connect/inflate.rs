@@ -55,7 +55,7 @@ pub fn inflate(bd: &mut Boundary<'_>, g: &EdgeMask, stats: &mut Stats) {
         }
     }
     while bd.non_manifold > 0 {
-        let Some(c) = queue.pop() else { break };
+        let Some(c) = queue.pop(bd.dt) else { break };
         let t = c.t;
         if bd.inside[t as usize] || !is_candidate(bd, t) || cost(bd, t) != c.cost {
             continue;

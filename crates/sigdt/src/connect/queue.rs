@@ -10,24 +10,15 @@
 //! pushed when it changed).
 use crate::delaunay::Triangulation;
 use std::cmp::Ordering;
-use std::collections::BinaryHeap;
 
-/// A triangle waiting in the queue with the cost it had when pushed.
+/// A triangle waiting in the queue with the cost it had when pushed (16 bytes: the queue
+/// can be the largest array alive, so the tie key is computed only on a tie).
 #[derive(Debug, Clone, Copy)]
 pub struct Candidate {
     /// Change of total boundary length if the triangle is taken.
     pub cost: f64,
-    /// The triangle's [`vertex_key`], which orders ties.
-    key: u64,
     /// The triangle.
     pub t: u32,
-}
-
-impl Candidate {
-    /// The candidate `t` of `dt` at `cost`.
-    pub fn new(dt: &Triangulation, t: u32, cost: f64) -> Candidate {
-        Candidate { cost, key: vertex_key(dt, t), t }
-    }
 }
 
 /// A triangle named by its vertices, whatever its number and first corner: its smallest
@@ -45,48 +36,66 @@ fn vertex_key(dt: &Triangulation, t: u32) -> u64 {
     u64::from(first) << 32 | u64::from(then)
 }
 
-impl PartialEq for Candidate {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
-    }
-}
-impl Eq for Candidate {}
-impl PartialOrd for Candidate {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Candidate {
-    /// Reversed, so that `BinaryHeap` (a max-heap) pops the cheapest first.
-    fn cmp(&self, other: &Self) -> Ordering {
-        other.cost.total_cmp(&self.cost).then(other.key.cmp(&self.key))
-    }
+/// The order of the queue: cost, then the triangles' vertices.
+fn order(dt: &Triangulation, a: &Candidate, b: &Candidate) -> Ordering {
+    a.cost.total_cmp(&b.cost).then_with(|| vertex_key(dt, a.t).cmp(&vertex_key(dt, b.t)))
 }
 
-/// Min-queue of candidates.
+/// Min-queue of candidates: a binary heap ordered by [`order`].
 #[derive(Debug, Default)]
 pub struct CandidateQueue {
-    heap: BinaryHeap<Candidate>,
-}
-
-impl From<Vec<Candidate>> for CandidateQueue {
-    /// The queue of `candidates`, in linear time.
-    fn from(candidates: Vec<Candidate>) -> CandidateQueue {
-        CandidateQueue { heap: BinaryHeap::from(candidates) }
-    }
+    heap: Vec<Candidate>,
 }
 
 impl CandidateQueue {
-    /// Adds the triangle `t` of `dt` at `cost`.
-    #[inline]
+    /// The queue of `candidates`, in linear time.
+    pub fn new(dt: &Triangulation, candidates: Vec<Candidate>) -> CandidateQueue {
+        let mut queue = CandidateQueue { heap: candidates };
+        for i in (0..queue.heap.len() / 2).rev() {
+            queue.sift_down(dt, i);
+        }
+        queue
+    }
+
+    /// Adds the triangle `t` at `cost`.
     pub fn push(&mut self, dt: &Triangulation, t: u32, cost: f64) {
-        self.heap.push(Candidate::new(dt, t, cost));
+        self.heap.push(Candidate { cost, t });
+        let mut i = self.heap.len() - 1;
+        while i > 0 {
+            let parent = (i - 1) / 2;
+            if order(dt, &self.heap[i], &self.heap[parent]) != Ordering::Less {
+                break;
+            }
+            self.heap.swap(i, parent);
+            i = parent;
+        }
     }
 
     /// Removes and returns the cheapest candidate.
-    #[inline]
-    pub fn pop(&mut self) -> Option<Candidate> {
-        self.heap.pop()
+    pub fn pop(&mut self, dt: &Triangulation) -> Option<Candidate> {
+        let last = self.heap.len().checked_sub(1)?;
+        self.heap.swap(0, last);
+        let top = self.heap.pop();
+        self.sift_down(dt, 0);
+        top
+    }
+
+    fn sift_down(&mut self, dt: &Triangulation, mut i: usize) {
+        let n = self.heap.len();
+        loop {
+            let (left, right) = (2 * i + 1, 2 * i + 2);
+            let mut least = i;
+            for child in [left, right] {
+                if child < n && order(dt, &self.heap[child], &self.heap[least]) == Ordering::Less {
+                    least = child;
+                }
+            }
+            if least == i {
+                return;
+            }
+            self.heap.swap(i, least);
+            i = least;
+        }
     }
 }
 
@@ -103,16 +112,22 @@ mod tests {
         let triangles = 0..dt.num_triangles() as u32;
         let mut by_key: Vec<u32> = triangles.clone().collect();
         by_key.sort_by_key(|&t| vertex_key(&dt, t));
+        let cheap = by_key[by_key.len() - 1];
+        let mut expected = vec![cheap];
+        expected.extend(&by_key);
         let mut q = CandidateQueue::default();
         for t in triangles.clone().rev() {
             q.push(&dt, t, 1.0);
         }
-        let cheap = by_key[by_key.len() - 1];
         q.push(&dt, cheap, -2.0);
-        let order: Vec<u32> = std::iter::from_fn(|| q.pop()).map(|c| c.t).collect();
-        let mut expected = vec![cheap];
-        expected.extend(&by_key);
-        assert_eq!(order, expected);
+        let popped: Vec<u32> = std::iter::from_fn(|| q.pop(&dt)).map(|c| c.t).collect();
+        assert_eq!(popped, expected);
+        let mut built: Vec<Candidate> =
+            triangles.clone().map(|t| Candidate { cost: 1.0, t }).collect();
+        built.push(Candidate { cost: -2.0, t: cheap });
+        let mut q = CandidateQueue::new(&dt, built);
+        let popped: Vec<u32> = std::iter::from_fn(|| q.pop(&dt)).map(|c| c.t).collect();
+        assert_eq!(popped, expected);
         let shuffled = dt.with_triangles_shuffled(3);
         let keys = |dt: &Triangulation| {
             let mut keys: Vec<u64> = triangles.clone().map(|t| vertex_key(dt, t)).collect();

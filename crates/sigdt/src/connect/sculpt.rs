@@ -43,12 +43,12 @@ pub fn sculpt(bd: &mut Boundary<'_>, stats: &mut Stats) {
     if bd.interior > 0 {
         initial.extend(
             (0..bd.dt.num_triangles() as u32)
-                .filter_map(|t| candidate(bd, t).map(|(_, cost)| Candidate::new(bd.dt, t, cost))),
+                .filter_map(|t| candidate(bd, t).map(|(_, cost)| Candidate { cost, t })),
         );
     }
-    let mut queue = CandidateQueue::from(initial);
+    let mut queue = CandidateQueue::new(bd.dt, initial);
     while bd.interior > 0 {
-        let Some(c) = queue.pop() else { break };
+        let Some(c) = queue.pop(bd.dt) else { break };
         let t = c.t;
         let Some((ab, cost)) = candidate(bd, t) else { continue };
         if cost != c.cost {
