@@ -5,7 +5,7 @@ it and Gaussian noise of a quarter of the spacing across, both shuffled; and a n
 about 10^6 points (issue 33): the lines of a square grid, warped into smooth curves that
 cross at about 53 000 shared samples, shuffled.
 
-usage: .venv/bin/python tools/sig-auto-speed-inputs.py OUT_DIR
+usage: .venv/bin/python tools/sig-auto-speed-inputs.py [--no-curve] OUT_DIR
 then:  sigdt reconstruct OUT_DIR/even1e6.xy --threads 1 -o OUT.edges   (and --method
        sig-connect2d; tools/bench-process.sh interleaves whole processes)
 """
@@ -53,11 +53,34 @@ def warped_grid(cells: int, per_side: int, seed: int) -> np.ndarray:
     return np.column_stack([x, y])[np.random.default_rng(seed).permutation(u.size)]
 
 
+def no_curve(out: Path) -> None:
+    """The S2 layouts (module docs), each shuffled."""
+    rng = np.random.default_rng(1)
+
+    def save(name: str, p: np.ndarray) -> None:
+        np.savetxt(out / name, p[rng.permutation(len(p))], fmt="%.10f")
+
+    grid = np.stack(np.meshgrid(np.arange(1000), np.arange(1000)), -1).reshape(-1, 2)
+    save("grid1e6.xy", grid.astype(float))
+    save("uniform1e6.xy", rng.uniform(0, 1, (10**6, 2)))
+    centres, angles = rng.uniform(0, 1, (500_000, 2)), rng.uniform(0, 2 * np.pi, 500_000)
+    twins = centres + np.column_stack([np.cos(angles), np.sin(angles)]) * 1e-4 / np.sqrt(10)
+    save("pairs1e6.xy", np.concatenate([centres, twins]))
+    along, lines = np.arange(1001.0), np.arange(0, 1001, 10.0)
+    rows = np.stack(np.meshgrid(along, lines), -1).reshape(-1, 2)
+    columns = np.stack(np.meshgrid(lines, along), -1).reshape(-1, 2)
+    save("street1e6.xy", np.concatenate([rows, columns[columns[:, 1] % 10 != 0]]))
+
+
 def main() -> None:
-    if len(sys.argv) != 2:
+    args = sys.argv[1:]
+    if len(args) not in (1, 2) or (len(args) == 2 and args[0] != "--no-curve"):
         sys.exit(__doc__)
-    out = Path(sys.argv[1])
+    out = Path(args[-1])
     out.mkdir(parents=True, exist_ok=True)
+    if len(args) == 2:
+        no_curve(out)
+        return
     np.savetxt(out / "even1e6.xy", sample(10**6, 0.1, 0.0, 5), fmt="%.10f")
     np.savetxt(out / "noisy1e5.xy", sample(10**5, 0.3, 0.25, 11), fmt="%.10f")
     np.savetxt(out / "network1e6.xy", warped_grid(229, 10, 13), fmt="%.10f")
