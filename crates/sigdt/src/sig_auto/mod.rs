@@ -115,7 +115,8 @@ pub use steps::Steps;
 
 /// The most rounds of outlier removal: later rounds still read their points, they only no
 /// longer look for tree branches to leave out. A safety bound for adversarial input; on the
-/// labelled data no case needs more than two (`docs/sig-auto.md`).
+/// labelled data a reading takes at most 8 rounds, most take one or two
+/// (`docs/reliability.md`, S2).
 pub const MAX_ROUNDS: usize = 16;
 
 /// Reconstructs `dt`'s points with SIG-AUTO (see the module docs), expecting nothing.
