@@ -16,7 +16,14 @@ import numpy as np
 
 from . import _layers
 from ._api import _threads
-from ._groups import Errors, Failure, check_errors, run_groups, warn_about_groups
+from ._groups import (
+    Errors,
+    Failure,
+    check_errors,
+    grouped_positions,
+    run_groups,
+    warn_about_groups,
+)
 from ._input import LEAF_ELIMINATION, _check_method
 from ._types import Expect, Method
 
@@ -119,29 +126,31 @@ def outlines(
     else:
         series = gpd.GeoSeries(np.asarray(geometries, dtype=object).ravel())
 
-    positions = pd.Series(np.arange(len(series)), index=series.index)
     if by is None:
         keys: list[Any] = list(series.index)
-        members = [[k] for k in range(len(series))]
+        order, sizes = np.arange(len(series)), np.ones(len(series), np.int64)
         names = [f"row {k!r}" for k in keys]
         index = series.index
     else:
         labels, columns = _labels(by, frame, len(series))
-        pairs = list(positions.groupby(labels, sort=True, dropna=False))
-        keys = [k for k, _ in pairs]
-        members = [group.to_numpy() for _, group in pairs]
+        positions = pd.Series(np.arange(len(series)), index=series.index)
+        groups, order, sizes = grouped_positions(positions.groupby(labels, sort=True, dropna=False))
+        keys = list(groups)
         names = [f"group {k!r}" for k in keys]
         if len(columns) > 1:
             index = pd.MultiIndex.from_tuples(keys, names=columns)
         else:
             index = pd.Index(keys, name=columns[0] if columns else None)
-    values = series.values
-    arrays: list[np.ndarray | Failure] = []
-    for rows in members:
-        coords = np.ascontiguousarray(
-            shapely.get_coordinates(np.asarray(values[rows], dtype=object)), dtype=np.float64
-        )
-        arrays.append(coords if len(coords) else Failure(0, "no points: missing or empty"))
+    # Every geometry's vertices in group order at once, then each group's slice of them.
+    ordered = np.asarray(series.values, dtype=object)[order]
+    coords = np.ascontiguousarray(shapely.get_coordinates(ordered), dtype=np.float64)
+    per_geometry = shapely.get_num_coordinates(ordered)
+    ends = np.cumsum(per_geometry)[np.cumsum(sizes) - 1] if len(ordered) else sizes
+    starts = np.r_[0, ends[:-1]] if len(ends) else ends
+    arrays: list[np.ndarray | Failure] = [
+        coords[a:b] if b > a else Failure(0, "no points: missing or empty")
+        for a, b in zip(starts.tolist(), ends.tolist())
+    ]
     results = run_groups(
         arrays,
         names,

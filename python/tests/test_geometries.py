@@ -59,6 +59,10 @@ def test_outlines_by_groups_the_geometries_as_dissolve_does() -> None:
     assert out.area.round(0).tolist() == [round(shapely.Polygon(a).area)] * 2
     curves = sigdt.outlines(frame, by="island", expect="curves")
     assert set(curves.geom_type) == {"MultiLineString"} and curves.iloc[0].is_closed
+    # A list of one column groups as the column does (it raised inside pandas before).
+    listed = sigdt.outlines(frame, by=["island"])
+    assert list(listed.index) == ["a", "b"] and listed.index.names == ["island"]
+    assert listed.geom_equals(out).all()
 
 
 def test_a_failing_geometry_or_group_is_a_row_and_the_warning_names_it() -> None:
