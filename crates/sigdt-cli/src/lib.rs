@@ -15,6 +15,7 @@
 //! samples and their files), [`output`], [`format`](mod@format), [`gis_output`] and
 //! [`groups`] (`--by`); none of those imports a command.
 
+mod allocation_failure;
 mod bench;
 mod cli;
 mod cmd;
@@ -30,6 +31,8 @@ mod output;
 mod png;
 mod progress;
 mod view;
+
+pub use allocation_failure::ExitOnAllocationFailure;
 
 use std::ffi::OsString;
 use std::io::Write;

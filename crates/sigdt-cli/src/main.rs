@@ -3,6 +3,10 @@
 
 use std::process::ExitCode;
 
+/// A failed allocation exits with status 1 and one line instead of aborting.
+#[global_allocator]
+static ALLOCATOR: sigdt_cli::ExitOnAllocationFailure = sigdt_cli::ExitOnAllocationFailure;
+
 fn main() -> ExitCode {
     ExitCode::from(sigdt_cli::run(std::env::args_os()))
 }

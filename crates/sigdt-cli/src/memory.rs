@@ -1,10 +1,10 @@
 //! Refusing a run that cannot fit under the address-space limit, before it starts (issue
-//! 47, S3). When an allocation fails, Rust prints `memory allocation of N bytes failed` and
-//! aborts (SIGABRT, a core file), and stable Rust offers no way to catch it; under
-//! `ulimit -v` (RLIMIT_AS) every command did so. Here each command that knows its cost per
-//! point compares a *lower bound* of what it will need with what the limit leaves, and
-//! refuses with exit 1 and one line when even that cannot fit. A run that passes may still
-//! abort near the limit: the bound is low on purpose, so that no run that fits is refused.
+//! 47, S3). Under `ulimit -v` (RLIMIT_AS) every command aborted where an allocation failed.
+//! Here each command that knows its cost per point compares a *lower bound* of what it will
+//! need with what the limit leaves, and refuses with exit 1 and one line when even that
+//! cannot fit, before reading further. The bound is low on purpose, so that no run that
+//! fits is refused; a run that passes and still fails an allocation ends with exit 1 too
+//! ([`crate::allocation_failure`]).
 
 use anyhow::{bail, Result};
 

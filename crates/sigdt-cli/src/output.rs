@@ -215,6 +215,16 @@ pub fn remove_pending_on_signals() {
     });
 }
 
+/// Removes the temporary files being written, from a path that must not block or panic
+/// (a failed allocation, `allocation_failure`): the list is read only if its lock is free.
+pub fn remove_pending_now() {
+    if let Ok(pending) = PENDING.try_lock() {
+        for path in pending.iter() {
+            let _ = fs::remove_file(path);
+        }
+    }
+}
+
 /// Whether `p` is `-`, meaning standard input or output.
 pub fn is_dash(p: &Path) -> bool {
     p.as_os_str() == "-"

@@ -94,3 +94,49 @@ fn a_run_that_cannot_fit_under_ulimit_v_is_refused_not_aborted() {
     assert!(stderr.contains("ulimit -v") && stderr.lines().count() == 1, "{stderr}");
     assert!(!dir.path().join("v.html").exists());
 }
+
+#[test]
+#[cfg(target_os = "linux")]
+fn no_address_space_limit_makes_a_run_abort() {
+    // Issue 47, S3: a run the bound lets through could still fail an allocation near the
+    // limit, and Rust aborts there (SIGABRT, "memory allocation of N bytes failed"). Every
+    // limit from one the program barely starts under to one the run fits in must end in
+    // exit 0, or exit 1 with one line, and leave no output file behind.
+    let dir = tempdir();
+    let points: Vec<[f64; 2]> = (0..300_000u64)
+        .map(|k| {
+            let h = k.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+            [(h >> 40) as f64, ((h >> 16) & 0xFF_FFFF) as f64]
+        })
+        .collect();
+    write_points(dir.path(), "scatter.xy", &points);
+    let command = sigdt_command();
+    let program = command.get_program().to_owned();
+    let mut failures = 0;
+    for limit_mb in (40..=200).step_by(10) {
+        let out = Command::new("sh")
+            .arg("-c")
+            .arg(format!("ulimit -v {} && exec \"$0\" \"$@\"", limit_mb * 1024))
+            .arg(&program)
+            .args(command.get_args())
+            .args(["reconstruct", "scatter.xy", "--method", "sig-connect2d", "-o", "r.wkt"])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        let ended = format!("{limit_mb} MB: {:?}\n{stderr}", out.status);
+        match out.status.code() {
+            Some(0) => {}
+            Some(1) => {
+                failures += 1;
+                assert!(stderr.lines().count() == 1 && stderr.contains("memory"), "{ended}");
+                assert!(!dir.path().join("r.wkt").exists(), "{ended}");
+            }
+            _ => panic!("{ended}"),
+        }
+        let _ = std::fs::remove_file(dir.path().join("r.wkt"));
+        let left: Vec<_> = std::fs::read_dir(dir.path()).unwrap().flatten().collect();
+        assert_eq!(left.len(), 1, "{ended}\n{left:?}");
+    }
+    assert!(failures > 0, "no limit was low enough to test");
+}
