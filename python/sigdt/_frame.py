@@ -9,7 +9,6 @@ import numpy as np
 
 from . import _layers
 from ._api import _no_cycle_collection, _threads
-from ._geodataframe import _diagnosis
 from ._groups import (
     ERROR,
     Errors,
@@ -175,36 +174,42 @@ def _frame_of(results: list[Any], index: Any, crs: Any) -> GeoDataFrame:
     """The rows of ``results`` (reconstructions and failures), one geometry type a column."""
     import geopandas as gpd
 
-    done = [None if isinstance(r, Failure) else r for r in results]
-    lines = [_layers.lines_of(r) for r in done]
-    # One pass over the rows for every column: ten per group cost more than a small
-    # group's reconstruction.
-    columns = [
-        (ERROR, True, r.message, r.n_points, 0) if isinstance(r, Failure) else _row_of(r)
-        for r in results
-    ]
-    status, warning, diagnosis, n_points, n_left_out = (
-        (list(c) for c in zip(*columns)) if columns else ([], [], [], [], [])
-    )
+    # One pass over the groups for every column, reading the extension's fields directly:
+    # a property or a call a column costs more than a small group's reconstruction.
+    n = len(results)
+    status, warning, diagnosis, n_points, n_left_out = [], [], [], [], []
+    empty = _layers.lines_of(None)[0]
+    paths = np.full(n, empty, dtype=object)
+    networks = np.full(n, empty, dtype=object)
+    areas = _layers.ManyAreas(n)
+    for g, r in enumerate(results):
+        if isinstance(r, Failure):
+            status.append(ERROR)
+            warning.append(True)
+            diagnosis.append(r.message)
+            n_points.append(r.n_points)
+            n_left_out.append(0)
+            continue
+        fields = r._fields
+        status.append(fields["status"])
+        warning.append(fields["status_warns"])
+        findings = fields["diagnosis"]
+        diagnosis.append("; ".join([f["message"] for f in findings]) if findings else "")
+        n_points.append(len(r.points))
+        n_left_out.append(len(fields["left_out"]))
+        if len(fields["path_offsets"]) >= 2:
+            paths[g], networks[g] = _layers.lines_of(r)
+        areas.add(g, r)
     rows = {
-        "paths": gpd.GeoSeries([free for free, _ in lines], index=index, crs=crs),
-        "networks": gpd.GeoSeries([meeting for _, meeting in lines], index=index, crs=crs),
+        "paths": gpd.GeoSeries(paths, index=index, crs=crs),
+        "networks": gpd.GeoSeries(networks, index=index, crs=crs),
         "status": status,
         "warning": warning,
         "diagnosis": diagnosis,
         "n_points": np.asarray(n_points, np.int64),
         "n_left_out": np.asarray(n_left_out, np.int64),
     }
-    areas = _layers.many_areas(done)
-    return gpd.GeoDataFrame(rows, geometry=areas, crs=crs, index=index)
-
-
-def _row_of(rec: Reconstruction) -> tuple[Any, ...]:
-    """A reconstruction's status, warning, diagnosis, point and left-out counts, read from
-    the extension's fields (the properties cost more than the rest of a small group's row)."""
-    fields = rec._fields
-    counts = len(rec.points), len(fields["left_out"])
-    return fields["status"], fields["status_warns"], _diagnosis(rec), *counts
+    return gpd.GeoDataFrame(rows, geometry=areas.build(), crs=crs, index=index)
 
 
 def _groups_of(frame: Any, by: Any) -> tuple[list[Any], np.ndarray, np.ndarray, Any]:

@@ -155,47 +155,81 @@ def curves(rec: Outlines) -> shapely.MultiLineString:
 
 def many_areas(results: list[Any]) -> list[Any]:
     """:func:`areas` of many results (``None`` for a group without one: an empty
-    ``MultiPolygon``), built by shapely's array functions: one ``Polygon`` at a time costs
-    more than a small group's reconstruction. Longitude/latitude results go one by one, since
-    their polygons may be split."""
-    import shapely
-
-    coords: list[np.ndarray] = []
-    ring_sizes: list[int] = []  # each ring's vertices
-    polygon_of: list[int] = []  # each ring's polygon
-    group_of: list[int] = []  # each polygon's group
-    out = np.empty(len(results), dtype=object)
-    empty = _empty("areas")
+    ``MultiPolygon``), built by shapely's array functions (:class:`ManyAreas`)."""
+    builder = ManyAreas(len(results))
     for g, rec in enumerate(results):
-        # The loops straight from the result's flat arrays (rec.loops splits them anew).
-        fields = None if rec is None else rec._fields
-        offsets = None if fields is None else fields["loop_offsets"]
+        if rec is not None:
+            builder.add(g, rec)
+    return list(builder.build())
+
+
+class ManyAreas:
+    """:func:`areas` of many results at once: one ``Polygon`` at a time costs more than a
+    small group's reconstruction, so the rings of every group are gathered and built by
+    shapely's array functions in :meth:`build`. Longitude/latitude results go one by one,
+    since their polygons may be split."""
+
+    def __init__(self, groups: int) -> None:
+        self._out = np.full(groups, _empty("areas"), dtype=object)
+        # One-loop groups (the common case of small groups): their points and loop, joined
+        # into one array in build().
+        self._points: list[np.ndarray] = []
+        self._loops: list[np.ndarray] = []
+        self._shell_of: list[int] = []  # each one-loop group
+        # Groups of several loops: their rings' coordinates.
+        self._coords: list[np.ndarray] = []
+        self._ring_sizes: list[int] = []  # each ring's vertices
+        self._polygon_of: list[int] = []  # each ring's polygon
+        self._group_of: list[int] = []  # each polygon's group
+
+    def add(self, g: int, rec: Any) -> None:
+        """Adds group ``g``'s result ``rec`` (a group not added has an empty area)."""
+        fields = rec._fields
+        offsets = fields["loop_offsets"]
         if offsets is None or len(offsets) < 2:
-            out[g] = empty
-        elif _split(rec):
-            out[g] = areas(rec)
-        elif len(offsets) == 2:  # one loop: one shell, the common case of small groups
+            return
+        if _split(rec):
+            self._out[g] = areas(rec)
+        elif len(offsets) == 2:
             positions = fields["positions"]
-            ring = (rec.points if positions is None else positions)[fields["loop_vertices"]]
-            coords.append(ring)
-            ring_sizes.append(len(ring))
-            polygon_of.append(len(group_of))
-            group_of.append(g)
+            self._points.append(rec.points if positions is None else positions)
+            self._loops.append(fields["loop_vertices"])
+            self._shell_of.append(g)
         else:
-            v, flat = rec.vertices, rec._fields["loop_vertices"]
+            v, flat = rec.vertices, fields["loop_vertices"]
             for shell, holes in rec.polygons:
                 for k in [shell, *holes]:
                     loop = flat[offsets[k] : offsets[k + 1]]
-                    coords.append(v[loop])  # linearrings closes each ring
-                    ring_sizes.append(len(loop))
-                    polygon_of.append(len(group_of))
-                group_of.append(g)
-    if group_of:
-        ring_of = np.repeat(np.arange(len(ring_sizes)), ring_sizes)  # each vertex's ring
-        rings = shapely.linearrings(np.concatenate(coords), indices=ring_of)
-        polygons = shapely.polygons(rings, indices=np.asarray(polygon_of))
-        # multipolygons wants every index from 0 to the largest: number the groups that
-        # have polygons consecutively, then place them.
-        present, consecutive = np.unique(np.asarray(group_of), return_inverse=True)
-        out[present] = shapely.multipolygons(polygons, indices=consecutive)
-    return list(out)
+                    self._coords.append(v[loop])  # linearrings closes each ring
+                    self._ring_sizes.append(len(loop))
+                    self._polygon_of.append(len(self._group_of))
+                self._group_of.append(g)
+
+    def build(self) -> np.ndarray:
+        """Every group's ``MultiPolygon``, in group order (an object array)."""
+        import shapely
+
+        if self._shell_of:
+            # The one-loop groups' rings as the multi-loop groups' are: one vertex array,
+            # each loop's indices moved to its group's place in it.
+            sizes = np.fromiter(map(len, self._points), np.int64, len(self._points))
+            lengths = np.fromiter(map(len, self._loops), np.int64, len(self._loops))
+            bases = np.cumsum(sizes) - sizes
+            flat = np.concatenate(self._loops) + np.repeat(bases, lengths)
+            self._coords.insert(0, np.concatenate(self._points)[flat])
+            shells = len(self._shell_of)
+            self._ring_sizes[:0] = lengths.tolist()
+            self._polygon_of = list(range(shells)) + [p + shells for p in self._polygon_of]
+            self._group_of[:0] = self._shell_of
+        if self._group_of:
+            ring_of = np.repeat(np.arange(len(self._ring_sizes)), self._ring_sizes)
+            rings = shapely.linearrings(np.concatenate(self._coords), indices=ring_of)
+            polygons = shapely.polygons(rings, indices=np.asarray(self._polygon_of))
+            # multipolygons wants its indices in increasing order, every one from 0 to the
+            # largest: sort the polygons by group (each group's stay in order), number the
+            # groups that have polygons consecutively, then place them.
+            group_of = np.asarray(self._group_of)
+            by_group = np.argsort(group_of, kind="stable")
+            present, consecutive = np.unique(group_of[by_group], return_inverse=True)
+            self._out[present] = shapely.multipolygons(polygons[by_group], indices=consecutive)
+        return self._out

@@ -102,6 +102,38 @@ def test_reconstruct_frame_gives_one_row_per_group() -> None:
     assert len(whole) == 1 and whole.geometry.iloc[0].equals(alone)
 
 
+def test_reconstruct_frame_areas_are_each_groups_own_in_any_mix_of_groups() -> None:
+    # The areas of all groups are built at once, one-loop groups apart from the others
+    # (issue 47, P4): each row must still hold its own group's polygons, holes included.
+    def circle(x: float, r: float, k: int) -> np.ndarray:
+        t = np.linspace(0, 2 * np.pi, k, endpoint=False)
+        return np.c_[x + r * np.cos(t), r * np.sin(t)]
+
+    groups = {
+        "a": np.r_[circle(0, 10, 40), circle(0, 4, 16)],  # a ring round a hole
+        "b": circle(100, 5, 20),
+        "c": np.r_[circle(200, 5, 20), circle(230, 5, 20)],  # two islands
+        "d": np.array([[300.0, 0], [301, 0]]),  # too few points: no area
+        "e": circle(400, 6, 24),
+    }
+    keys = [k for k, v in groups.items() for _ in v]
+    frame = gpd.GeoDataFrame(
+        {"g": keys[::-1]}, geometry=shapely.points(np.concatenate(list(groups.values()))[::-1])
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sigdt.SigdtWarning)
+        out = sigdt.reconstruct_frame(frame, by="g", progress=False)
+        alone = {k: sigdt.reconstruct(v[::-1]) for k, v in groups.items()}
+    counts = {
+        k: (len(g.geoms), sum(len(p.interiors) for p in g.geoms)) for k, g in out.geometry.items()
+    }
+    assert counts == {"a": (1, 1), "b": (1, 0), "c": (2, 0), "d": (0, 0), "e": (1, 0)}
+    for k, rec in alone.items():
+        shapes = [p.normalize() for p in out.geometry.loc[k].geoms]
+        own = [shapely.Polygon(shell, holes) for shell, *holes in rec.layers()["areas"]]
+        assert shapes == [p.normalize() for p in own], k
+
+
 def test_reconstruct_frame_groups_as_pandas_does() -> None:
     # Issue 47, P1: by=["k"] raised KeyError, and by=("k",) and by=series failed too.
     square = [[0, 0], [9, 0], [9, 9], [0, 9]]
