@@ -69,3 +69,12 @@ fn sqlite_quoting_the_schema_puts_no_control_character_in_the_message() {
     assert!(err.contains("not a readable GeoPackage"), "{err}");
     assert!(!err.chars().any(char::is_control), "{err}");
 }
+
+#[test]
+fn a_geometry_column_named_with_a_control_character_is_escaped_in_the_message() {
+    // Found by the fuzz target (1.8 million runs in): a geometry column named "ge\u{19}m"
+    // holding text; rusqlite's reason names the column as the file spells it.
+    let err = read("crash-control-character-in-column-name").unwrap_err();
+    assert!(err.contains("the geometry is not a blob"), "{err}");
+    assert!(!err.chars().any(char::is_control), "{err}");
+}

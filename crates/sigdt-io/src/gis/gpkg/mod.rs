@@ -179,7 +179,11 @@ pub fn read_on_budget(
         position += 1;
         let fid: i64 = row.get::<_, Option<i64>>(0).map_err(&sql_error)?.unwrap_or(position);
         let blob: Option<Vec<u8>> = row.get(1).map_err(|e| {
-            anyhow!("{name}: layer {table}, feature {fid}: the geometry is not a blob ({e})")
+            // rusqlite names the column as the file spells it: escaped like any reason.
+            anyhow!(
+                "{name}: layer {table}, feature {fid}: the geometry is not a blob ({})",
+                reason(&e)
+            )
         })?;
         let before = points.len();
         if let Some(blob) = &blob {
