@@ -1,7 +1,9 @@
 //! Arbitrary points (as in the `reconstruct` target) through `Triangulation::new`: the
 //! invariant checker passes (valid, Delaunay under the symbolic perturbation, checked
 //! exactly), and the input reversed gives the same vertex positions, triangles and twins
-//! (the triangulation is canonical), or the same kind of error.
+//! (the triangulation is canonical), or the same kind of error. Divided and conquered in 2
+//! and 4 parts (`Triangulation::new_divided`, merge seams of every kind the input makes),
+//! it gives the same vertices, input indices and triangles, in another layout.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -17,8 +19,29 @@ fuzz_target!(|data: &[u8]| {
         (Ok(dt), Ok(other)) => {
             check_delaunay(&dt).unwrap();
             let (a, b) = (FlatArrays::of(&dt), FlatArrays::of(&other));
+            for halvings in [1, 2] {
+                let divided = Triangulation::new_divided(&points, halvings).unwrap();
+                check_delaunay(&divided).unwrap();
+                let c = FlatArrays::of(&divided);
+                assert_eq!((&a.points, &a.input_index), (&c.points, &c.input_index));
+                assert_eq!(dt.duplicates(), divided.duplicates());
+                assert_eq!(triangle_set(&a.triangles), triangle_set(&c.triangles));
+            }
             assert_eq!((a.points, a.triangles, a.halfedges), (b.points, b.triangles, b.halfedges));
         }
         (a, b) => panic!("forward ok: {}, reversed ok: {}", a.is_ok(), b.is_ok()),
     }
 });
+
+/// The triangles, each from its smallest vertex (counter-clockwise kept), sorted.
+fn triangle_set(triangles: &[u32]) -> Vec<[u32; 3]> {
+    let mut out: Vec<[u32; 3]> = triangles
+        .chunks_exact(3)
+        .map(|t| {
+            let k = (0..3).min_by_key(|&i| t[i]).unwrap();
+            [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}

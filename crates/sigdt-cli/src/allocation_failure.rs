@@ -9,10 +9,11 @@
 //! removes the temporary output files being written and exits with status 1 and the line
 //! `sigdt: out of memory: ...`, naming the size that failed and the address-space limit.
 //!
-//! This is the project's only `unsafe`: implementing [`GlobalAlloc`] is unsafe by
-//! definition. Every method forwards to [`System`] unchanged; the failure path allocates
-//! nothing (the message is formatted on the stack, the temporary files are removed with
-//! the lock taken only if it is free) and never unwinds.
+//! Implementing [`GlobalAlloc`] is unsafe by definition; besides the speed benchmark's
+//! counting allocator, this is the workspace's only `unsafe`. Every method forwards to
+//! [`System`] unchanged; the failure path allocates nothing (the message is formatted on
+//! the stack, the temporary files are removed with the lock taken only if it is free) and
+//! never unwinds.
 //!
 //! [`memory::check`]: crate::memory
 

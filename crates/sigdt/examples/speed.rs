@@ -25,6 +25,10 @@
 //! - `T threads ms`, `speed-up`: `reconstruct` on a pool of `T` threads (`--threads T`,
 //!   default: the available parallelism) and the one-thread time over it. Every result is
 //!   checked to equal the one-thread result.
+//! - `divided ms`: median wall time of the divide-and-conquer triangulation
+//!   (`Triangulation::new_divided`, one part a thread, joined by the Guibas–Stolfi merge) on
+//!   the pool of `T` threads; `Delaunay/divided` is the one-thread insertion over it. Not
+//!   yet what `reconstruct` uses (`docs/algorithms.md` §7.6); its triangle count is checked.
 //! - `peak bytes/point`: heap high-water mark of one one-thread `reconstruct` call beyond
 //!   what the process held before it (the input points excluded), counted exactly by a
 //!   pass-through allocator.
@@ -81,9 +85,10 @@ fn main() -> Res<()> {
     let t = args.threads;
     println!(
         "| input | order | n | Delaunay ms | total ms | total/Delaunay | CGAL ms | total/CGAL \
-         | ns/point | {t} threads ms | speed-up | peak bytes/point | exact |"
+         | ns/point | {t} threads ms | speed-up | divided ms | Delaunay/divided \
+         | peak bytes/point | exact |"
     );
-    println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|");
+    println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|");
     let one = ThreadPoolBuilder::new().num_threads(1).build()?;
     let many = ThreadPoolBuilder::new().num_threads(t).build()?;
     let dir = std::env::temp_dir().join(format!("sigdt-speed-{}", std::process::id()));
@@ -107,15 +112,17 @@ fn main() -> Res<()> {
                 eprint!("{} repetitions; memory… ", m.reps);
                 let peak = one.install(|| peak_memory(&sample.points))?;
                 let (dt, total, total_t) = (m.delaunay * 1e3, m.total * 1e3, m.total_many * 1e3);
+                let divided = m.divided * 1e3;
                 let cgal_ms = m.cgal.map(|c| c * 1e3);
                 println!(
                     "| {name} | {order} | {n} | {dt:.2} | {total:.2} | {:.2} | {} | {} | {:.0} \
-                     | {total_t:.2} | {:.2} | {:.0} | {} |",
+                     | {total_t:.2} | {:.2} | {divided:.2} | {:.2} | {:.0} | {} |",
                     total / dt,
                     cgal_ms.map_or("n/a".into(), |c| format!("{c:.2}")),
                     cgal_ms.map_or("n/a".into(), |c| format!("{:.2}", total / c)),
                     total * 1e6 / n as f64,
                     total / total_t,
+                    dt / divided,
                     peak as f64 / n as f64,
                     if m.exact { "yes" } else { "no" },
                 );
@@ -153,6 +160,7 @@ struct Measured {
     delaunay: f64,
     total: f64,
     total_many: f64,
+    divided: f64,
     cgal: Option<f64>,
     reps: usize,
     exact: bool,
@@ -170,6 +178,8 @@ fn measure(
     let points = &sample.points[..];
     let options = Options { method: Method::SigConnect2d, ..Options::default() };
     let delaunay = || one.install(|| time(|| Triangulation::new(points)));
+    let halvings = many.current_num_threads().next_power_of_two().trailing_zeros();
+    let divided = || many.install(|| time(|| Triangulation::new_divided(points, halvings)));
     let total = |pool: &ThreadPool| pool.install(|| time(|| sigdt::reconstruct(points, &options)));
     // Warm-up: also checks the output and sizes the number of repetitions.
     let (first_dt, dt) = delaunay()?;
@@ -181,10 +191,16 @@ fn measure(
         (needed.min(MAX_REPS as f64) as usize).max(MIN_REPS)
     });
     let (mut dts, mut totals, mut manys, mut cgals) = (vec![], vec![], vec![], vec![]);
+    let mut divideds = vec![];
     for _ in 0..reps {
         let (t, dt) = delaunay()?;
         dts.push(t);
-        drop(dt); // dropped outside the timed region
+        let (t, parts) = divided()?;
+        divideds.push(t);
+        if parts.num_triangles() != dt.num_triangles() {
+            return Err("the divided triangulation has another triangle count".into());
+        }
+        drop((dt, parts)); // dropped outside the timed region
         let (t, r) = total(one)?;
         totals.push(t);
         drop(r);
@@ -202,6 +218,7 @@ fn measure(
         delaunay: median(&mut dts),
         total: median(&mut totals),
         total_many: median(&mut manys),
+        divided: median(&mut divideds),
         cgal: (!cgals.is_empty()).then(|| median(&mut cgals)),
         reps,
         exact,
@@ -337,7 +354,8 @@ static PEAK: AtomicUsize = AtomicUsize::new(0);
 /// The system allocator, counting bytes in [`CURRENT`] and [`PEAK`].
 struct Counting;
 
-// The only unsafe code in the workspace: a pass-through allocator for this benchmark.
+// Unsafe code, as in the CLI's allocator (`sigdt-cli/src/allocation_failure.rs`): a
+// pass-through allocator for this benchmark.
 #[allow(unsafe_code)]
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {

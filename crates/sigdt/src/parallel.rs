@@ -50,3 +50,14 @@ pub(crate) fn sort_unstable(items: &mut [u64]) {
     }
     items.sort_unstable()
 }
+
+/// `(a(), b())`, on two threads when the pool has them.
+pub(crate) fn join<A: Send, B: Send>(
+    a: impl FnOnce() -> A + Send,
+    b: impl FnOnce() -> B + Send,
+) -> (A, B) {
+    #[cfg(feature = "parallel")]
+    return rayon::join(a, b);
+    #[cfg(not(feature = "parallel"))]
+    (a(), b())
+}

@@ -43,12 +43,37 @@ fn check(points: &[Point], unique: bool) {
         let other = pool.install(|| FlatArrays::of(&Triangulation::new(points).unwrap()));
         assert_eq!(arrays, other, "{threads} threads");
     }
+    for halvings in [1, 2, 3] {
+        // Divided and conquered into 2, 4 and 8 parts (module `delaunay::divide`): the same
+        // vertices and triangles, stored in another layout.
+        let divided = Triangulation::new_divided(points, halvings).unwrap();
+        check_delaunay(&divided).unwrap();
+        let other = FlatArrays::of(&divided);
+        assert_eq!(arrays.points, other.points, "{halvings} halvings: points");
+        assert_eq!(arrays.input_index, other.input_index, "{halvings} halvings: input index");
+        assert_eq!(dt.duplicates(), divided.duplicates(), "{halvings} halvings: duplicates");
+        assert_eq!(triangle_set(&arrays), triangle_set(&other), "{halvings} halvings");
+    }
     if unique {
         match spade_reference(points).unwrap() {
             None => assert_eq!(dt.num_triangles(), 0, "spade found no triangle"),
             Some(edges) => assert_eq!(dt.edges(), edges, "spade's edges"),
         }
     }
+}
+
+/// The triangles, each from its smallest vertex (counter-clockwise kept), sorted.
+fn triangle_set(a: &FlatArrays) -> Vec<[u32; 3]> {
+    let mut out: Vec<[u32; 3]> = a
+        .triangles
+        .chunks_exact(3)
+        .map(|t| {
+            let k = (0..3).min_by_key(|&i| t[i]).unwrap();
+            [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+        })
+        .collect();
+    out.sort_unstable();
+    out
 }
 
 /// The same vertex positions, triangles and twins (input indices differ with the order).

@@ -1,6 +1,7 @@
 //! Building a [`Triangulation`]: hygiene, degenerate shapes, then the points copied once into
 //! BRIO order and inserted one by one into the flat arrays (module `incremental`).
 use super::brio::canonical_order;
+use super::divide::triangulate_divided;
 use super::hygiene::Scaling;
 use super::incremental::Dt;
 use super::relabel::vertex_halfedges;
@@ -17,16 +18,25 @@ impl Triangulation {
     /// [`Error::NonFinite`] for NaN or infinite coordinates, [`Error::CoordinateRange`] when
     /// the coordinates span more than about 2^172, [`Error::TooManyPoints`] past `u32`.
     pub fn new(points: &[Point]) -> Result<Triangulation> {
-        Triangulation::build(Cow::Borrowed(points))
+        Triangulation::build(Cow::Borrowed(points), 0)
+    }
+
+    /// [`new`](Self::new) divided `halvings` times and conquered on the current pool
+    /// (module `divide`): the same vertices and triangles in another layout. Not yet what
+    /// `new` does: on curves the parts' insertion costs more than the threads save
+    /// (`docs/algorithms.md` §7.6); the tests and `make bench` measure it.
+    #[doc(hidden)]
+    pub fn new_divided(points: &[Point], halvings: u32) -> Result<Triangulation> {
+        Triangulation::build(Cow::Borrowed(points), halvings)
     }
 
     /// [`new`](Self::new) on points it owns, which it frees once they are copied into
     /// insertion order, before the triangulation's arrays are allocated.
     pub(crate) fn from_vec(points: Vec<Point>) -> Result<Triangulation> {
-        Triangulation::build(Cow::Owned(points))
+        Triangulation::build(Cow::Owned(points), 0)
     }
 
-    fn build(points: Cow<'_, [Point]>) -> Result<Triangulation> {
+    fn build(points: Cow<'_, [Point]>, halvings: u32) -> Result<Triangulation> {
         // Half-edges are numbered in `u32` (`EMPTY` excluded): at most 6 per point.
         let max = EMPTY as usize / 6;
         if points.len() > max {
@@ -36,7 +46,7 @@ impl Triangulation {
         let scaled = |i: u32| scaling.apply(points[i as usize]);
         let mut order = canonical_order(scaled, points.len());
         if put_first_triangle_first(&mut order, scaled) {
-            proper(points, scaling, order)
+            proper(points, scaling, order, halvings)
         } else {
             Ok(on_a_line(points.len(), scaled, scaling))
         }
@@ -50,7 +60,7 @@ impl Triangulation {
 ///
 /// Inserting these first matters: spade's insertion is quadratic while all its vertices are
 /// collinear.
-fn put_first_triangle_first(order: &mut [u32], p: impl Fn(u32) -> Point) -> bool {
+pub(super) fn put_first_triangle_first(order: &mut [u32], p: impl Fn(u32) -> Point) -> bool {
     let Some(&a) = order.first() else { return false };
     let Some(b) = (1..order.len()).find(|&k| p(order[k]) != p(a)) else { return false };
     let off_line = |&k: &usize| orient2d(p(a), p(order[b]), p(order[k])) != 0.0;
@@ -94,11 +104,30 @@ fn on_a_line(n: usize, p: impl Fn(u32) -> Point, scaling: Scaling) -> Triangulat
     }
 }
 
-fn proper(input: Cow<'_, [Point]>, scaling: Scaling, order: Vec<u32>) -> Result<Triangulation> {
+fn proper(
+    input: Cow<'_, [Point]>,
+    scaling: Scaling,
+    order: Vec<u32>,
+    halvings: u32,
+) -> Result<Triangulation> {
     let n = input.len();
     // Reorder once: the points in insertion order, read sequentially from here on.
     let points = crate::parallel::map_slice(&order, |&i| scaling.apply(input[i as usize]));
     drop(input);
+    let divided = (halvings > 0).then(|| triangulate_divided(&points, &order, halvings));
+    if let Some(built) = divided.flatten() {
+        return Ok(Triangulation {
+            points: built.points,
+            input_index: built.input_index,
+            triangles: built.triangles,
+            halfedges: built.halfedges,
+            vertex_halfedge: built.vertex_halfedge,
+            duplicates: built.duplicates,
+            input_len: n,
+            shape: Shape::Proper,
+            scaling,
+        });
+    }
     let mut dt = Dt::new(points);
     // `order` becomes `input_index` in place: vertex `v` is written at `v <= k`.
     let mut input_index = order;

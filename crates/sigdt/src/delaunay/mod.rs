@@ -27,8 +27,10 @@
 pub(crate) mod brio;
 mod build;
 pub(crate) mod check;
+mod divide;
 pub(crate) mod hygiene;
 mod incremental;
+mod merge;
 pub(crate) mod perturbation;
 mod relabel;
 

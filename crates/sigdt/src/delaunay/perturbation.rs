@@ -53,8 +53,9 @@ fn tie_break(points: [Point; 4]) -> f64 {
     by_rank.into_iter().map(cofactor).find(|&term| term != 0.0).unwrap_or(0.0)
 }
 
-/// Lexicographic order on distinct points (`x`, then `y`).
-fn lexicographic(p: Point, q: Point) -> std::cmp::Ordering {
+/// Lexicographic order on points (`x`, then `y`): the ranks of the perturbation, and the
+/// order the divide-and-conquer triangulation splits in.
+pub(super) fn lexicographic(p: Point, q: Point) -> std::cmp::Ordering {
     p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
 }
 
