@@ -20,6 +20,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::fmt::Write as _;
 use std::io::Write as _;
+use std::sync::atomic::{AtomicUsize, Ordering::SeqCst};
 
 /// The system allocator, with a failed request ending the process with exit 1 (module
 /// docs). The `sigdt` binary installs it as its `#[global_allocator]`.
@@ -47,6 +48,14 @@ unsafe impl GlobalAlloc for ExitOnAllocationFailure {
     }
 }
 
+/// The thread of the first failed allocation (its [`THREAD_MARK`]'s address), 0 before.
+static EXITING: AtomicUsize = AtomicUsize::new(0);
+
+thread_local! {
+    /// A per-thread address that names the thread without allocating.
+    static THREAD_MARK: u8 = const { 0 };
+}
+
 /// `block`, unless it is null: then the run ends (module docs).
 #[inline]
 fn served(block: *mut u8, size: usize) -> *mut u8 {
@@ -59,6 +68,18 @@ fn served(block: *mut u8, size: usize) -> *mut u8 {
 #[cold]
 #[inline(never)]
 fn out_of_memory(size: usize) -> ! {
+    // Only the first failure reports and exits: calling `exit` twice is undefined in C.
+    // Another thread failing meanwhile waits for the process to end; the same thread
+    // failing again (in what `exit` runs) cannot report, and aborts.
+    let me = THREAD_MARK.with(|mark| mark as *const u8 as usize);
+    if let Err(first) = EXITING.compare_exchange(0, me, SeqCst, SeqCst) {
+        if first == me {
+            std::process::abort();
+        }
+        loop {
+            std::thread::sleep(std::time::Duration::from_secs(1));
+        }
+    }
     crate::output::remove_pending_now();
     let mut line = StackLine::default();
     let _ = write!(line, "sigdt: out of memory: an allocation of {} failed", Size(size as u64));
