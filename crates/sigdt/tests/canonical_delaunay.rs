@@ -52,7 +52,7 @@ fn check(points: &[Point], unique: bool) {
         assert_eq!(arrays.points, other.points, "{halvings} halvings: points");
         assert_eq!(arrays.input_index, other.input_index, "{halvings} halvings: input index");
         assert_eq!(dt.duplicates(), divided.duplicates(), "{halvings} halvings: duplicates");
-        assert_eq!(triangle_set(&arrays), triangle_set(&other), "{halvings} halvings");
+        assert_eq!(arrays.triangle_set(), other.triangle_set(), "{halvings} halvings");
     }
     if unique {
         match spade_reference(points).unwrap() {
@@ -60,20 +60,6 @@ fn check(points: &[Point], unique: bool) {
             Some(edges) => assert_eq!(dt.edges(), edges, "spade's edges"),
         }
     }
-}
-
-/// The triangles, each from its smallest vertex (counter-clockwise kept), sorted.
-fn triangle_set(a: &FlatArrays) -> Vec<[u32; 3]> {
-    let mut out: Vec<[u32; 3]> = a
-        .triangles
-        .chunks_exact(3)
-        .map(|t| {
-            let k = (0..3).min_by_key(|&i| t[i]).unwrap();
-            [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
-        })
-        .collect();
-    out.sort_unstable();
-    out
 }
 
 /// The same vertex positions, triangles and twins (input indices differ with the order).

@@ -36,6 +36,21 @@ impl FlatArrays {
             halfedges: hs.map(|h| dt.twin(h)).collect(),
         }
     }
+
+    /// The triangles whatever their layout: each from its smallest vertex
+    /// (counter-clockwise kept), sorted.
+    pub fn triangle_set(&self) -> Vec<[u32; 3]> {
+        let mut out: Vec<[u32; 3]> = self
+            .triangles
+            .chunks_exact(3)
+            .map(|t| {
+                let k = (0..3).min_by_key(|&i| t[i]).unwrap_or(0);
+                [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+            })
+            .collect();
+        out.sort_unstable();
+        out
+    }
 }
 
 /// spade's Delaunay edges of `points` as sorted input-index pairs (duplicates by their
