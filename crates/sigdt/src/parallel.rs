@@ -61,3 +61,20 @@ pub(crate) fn join<A: Send, B: Send>(
     #[cfg(not(feature = "parallel"))]
     (a(), b())
 }
+
+/// `f` on the ranges `0..chunk`, `chunk..2·chunk`, ... covering `0..n`, in order: for loops
+/// that carry a little state from one element to the next within a range.
+pub(crate) fn map_chunks<T: Send>(
+    n: usize,
+    chunk: usize,
+    f: impl Fn(std::ops::Range<usize>) -> T + Sync + Send,
+) -> Vec<T> {
+    let chunk = chunk.max(1);
+    let range = |c: usize| c * chunk..((c + 1) * chunk).min(n);
+    #[cfg(feature = "parallel")]
+    if n >= MIN_PARALLEL {
+        use rayon::prelude::*;
+        return (0..n.div_ceil(chunk)).into_par_iter().map(|c| f(range(c))).collect();
+    }
+    (0..n.div_ceil(chunk)).map(|c| f(range(c))).collect()
+}

@@ -220,24 +220,45 @@ fn measure_curve_with(
     curve: &[u32],
     closed: bool,
     spacing: Spacing,
+    visit: impl FnMut(EdgeMeasure),
+) {
+    let edges = edge_count(curve, closed);
+    measure_edges(dt, curve, closed, spacing, 0..edges, visit);
+}
+
+/// The number of edges of `curve` (`closed`: the last vertex joins the first, when there
+/// are three or more).
+fn edge_count(curve: &[u32], closed: bool) -> usize {
+    match curve.len() {
+        0 | 1 => 0,
+        n if closed && n >= 3 => n,
+        n => n - 1,
+    }
+}
+
+/// [`measure_curve_with`] on the edges `range` only (edge `k` runs from `curve[k]`).
+fn measure_edges(
+    dt: &Triangulation,
+    curve: &[u32],
+    closed: bool,
+    spacing: Spacing,
+    range: std::ops::Range<usize>,
     mut visit: impl FnMut(EdgeMeasure),
 ) {
     let n = curve.len();
-    if n < 2 {
+    if n < 2 || range.is_empty() {
         return;
     }
     let closed = closed && n >= 3;
-    let edges = if closed { n } else { n - 1 };
-    let r_first = spacing.at(dt, curve[0]);
-    let mut r_a = r_first;
+    let mut r_a = spacing.at(dt, curve[range.start]);
     // The vertex at position `k` along the curve, if there is one.
     let vertex = |k: isize| match closed {
         true => Some(curve[k.rem_euclid(n as isize) as usize]),
         false => usize::try_from(k).ok().and_then(|k| curve.get(k).copied()),
     };
-    for k in 0..edges {
+    for k in range {
         let (a, b) = (curve[k], curve[(k + 1) % n]);
-        let r_b = if k + 1 == n { r_first } else { spacing.at(dt, b) };
+        let r_b = spacing.at(dt, b);
         let length = distance(dt.point(a), dt.point(b));
         let (depth, deepest) = diametral_depth(dt, a, b);
         let beside = [vertex(k as isize - 1), vertex(k as isize + 2)];
@@ -249,6 +270,33 @@ fn measure_curve_with(
         });
         r_a = r_b;
     }
+}
+
+/// Edges measured on one thread at a time: long curves are split into runs this long.
+const EDGES_A_TASK: usize = 4096;
+
+/// The edges of `curve` whose diametral disk holds another vertex deeper than the sampling
+/// allows (property 1 of the module docs): each edge's depth and its end of lowest input
+/// index, in order along the curve. Long curves are measured in runs on the pool; the
+/// result is the same on every thread count.
+fn passes_over(
+    dt: &Triangulation,
+    curve: &[u32],
+    closed: bool,
+    spacing: Spacing,
+) -> Vec<(f64, u32)> {
+    let input = |v: u32| dt.input_index(v);
+    let runs = crate::parallel::map_chunks(edge_count(curve, closed), EDGES_A_TASK, |range| {
+        let mut found = Vec::new();
+        measure_edges(dt, curve, closed, spacing, range, |m| {
+            let allowed = if m.by_neighbour { DEPTH_RATIO } else { STRAY_DEPTH_RATIO };
+            if m.depth >= allowed {
+                found.push((m.depth, *m.ends.iter().min_by_key(|&&v| input(v)).unwrap()));
+            }
+        });
+        found
+    });
+    runs.concat()
 }
 
 /// The positions `k` in `curve` (vertices of `dt` in order; `closed`: the last joins the
@@ -268,12 +316,11 @@ fn doubling_back_with(
     let n = curve.len();
     let closed = closed && n >= 3;
     let inner = if closed { 0..n } else { 1..n.saturating_sub(1) };
-    let mut found = Vec::new();
-    for k in inner {
+    let doubles_back = |k: usize| {
         let (a, v, b) = (curve[(k + n - 1) % n], curve[k], curve[(k + 1) % n]);
         let cos = turn_cos(dt, a, v, b);
         if cos >= DOUBLING_BACK_COS {
-            continue;
+            return None;
         }
         let far =
             |w: u32, ratio: f64| distance(dt.point(v), dt.point(w)) >= ratio * spacing.at(dt, w);
@@ -286,11 +333,13 @@ fn doubling_back_with(
             && (turn_cos(dt, curve[(k + n - 2) % n], a, v) < SAMPLED_TURN_COS
                 || turn_cos(dt, v, b, curve[(k + 2) % n]) < SAMPLED_TURN_COS);
         let ratio = if isolated { DEPTH_RATIO } else { LONG_EDGE_RATIO };
-        if far(a, ratio) && far(b, ratio) {
-            found.push((k, cos.acos().to_degrees()));
-        }
-    }
-    found
+        (far(a, ratio) && far(b, ratio)).then(|| (k, cos.acos().to_degrees()))
+    };
+    // Long curves in runs on the pool, in order: the same on every thread count.
+    let runs = crate::parallel::map_chunks(inner.len(), EDGES_A_TASK, |run| {
+        run.filter_map(|j| doubles_back(inner.start + j)).collect::<Vec<_>>()
+    });
+    runs.concat()
 }
 
 /// The findings of the sampling check on `curves` (vertices of `dt` in order, each with
@@ -337,12 +386,9 @@ fn check_curves_with<'a>(
         for (k, degrees) in doubling_back_with(dt, curve, closed, spacing) {
             back.add(dt, degrees, curve[k]);
         }
-        measure_curve_with(dt, curve, closed, spacing, |m| {
-            let allowed = if m.by_neighbour { DEPTH_RATIO } else { STRAY_DEPTH_RATIO };
-            if m.depth >= allowed {
-                over.add(dt, m.depth, *m.ends.iter().min_by_key(|&&v| input(v)).unwrap());
-            }
-        });
+        for (depth, at) in passes_over(dt, curve, closed, spacing) {
+            over.add(dt, depth, at);
+        }
     }
     if !has_large_curve {
         small.count = 0;
