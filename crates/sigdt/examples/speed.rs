@@ -27,11 +27,12 @@
 //!   checked to equal the one-thread result.
 //! - `divided ms`: median wall time of the divide-and-conquer triangulation
 //!   (`Triangulation::new_divided`, one part a thread, joined by the Guibas–Stolfi merge) on
-//!   the pool of `T` threads; `Delaunay/divided` is the one-thread insertion over it. Not
-//!   yet what `reconstruct` uses (`docs/algorithms.md` §7.6); its triangle count is checked.
+//!   the pool of `T` threads, as `reconstruct` builds it there; `Delaunay/divided` is the
+//!   one-thread insertion over it. Its triangle count is checked.
 //! - `peak bytes/point`: heap high-water mark of one one-thread `reconstruct` call beyond
 //!   what the process held before it (the input points excluded), counted exactly by a
-//!   pass-through allocator.
+//!   pass-through allocator; `T threads peak` the same on the pool of `T` threads (where
+//!   the triangulation is divided among them).
 //! - `exact`: whether the edges equal the ground-truth cycle.
 //!
 //! Timing: after one warm-up, the calls alternate `R` times (so machine noise hits all of
@@ -86,9 +87,9 @@ fn main() -> Res<()> {
     println!(
         "| input | order | n | Delaunay ms | total ms | total/Delaunay | CGAL ms | total/CGAL \
          | ns/point | {t} threads ms | speed-up | divided ms | Delaunay/divided \
-         | peak bytes/point | exact |"
+         | peak bytes/point | {t} threads peak | exact |"
     );
-    println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|");
+    println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|");
     let one = ThreadPoolBuilder::new().num_threads(1).build()?;
     let many = ThreadPoolBuilder::new().num_threads(t).build()?;
     let dir = std::env::temp_dir().join(format!("sigdt-speed-{}", std::process::id()));
@@ -111,12 +112,13 @@ fn main() -> Res<()> {
                 let m = measure(&sample, args.reps, &one, &many, cgal)?;
                 eprint!("{} repetitions; memory… ", m.reps);
                 let peak = one.install(|| peak_memory(&sample.points))?;
+                let peak_many = many.install(|| peak_memory(&sample.points))?;
                 let (dt, total, total_t) = (m.delaunay * 1e3, m.total * 1e3, m.total_many * 1e3);
                 let divided = m.divided * 1e3;
                 let cgal_ms = m.cgal.map(|c| c * 1e3);
                 println!(
                     "| {name} | {order} | {n} | {dt:.2} | {total:.2} | {:.2} | {} | {} | {:.0} \
-                     | {total_t:.2} | {:.2} | {divided:.2} | {:.2} | {:.0} | {} |",
+                     | {total_t:.2} | {:.2} | {divided:.2} | {:.2} | {:.0} | {:.0} | {} |",
                     total / dt,
                     cgal_ms.map_or("n/a".into(), |c| format!("{c:.2}")),
                     cgal_ms.map_or("n/a".into(), |c| format!("{:.2}", total / c)),
@@ -124,6 +126,7 @@ fn main() -> Res<()> {
                     total / total_t,
                     dt / divided,
                     peak as f64 / n as f64,
+                    peak_many as f64 / n as f64,
                     if m.exact { "yes" } else { "no" },
                 );
                 std::io::stdout().flush()?;

@@ -41,6 +41,16 @@ pub(crate) fn map_slice<S: Sync, T: Send>(
     items.iter().map(f).collect()
 }
 
+/// `items.iter_mut().for_each(f)`.
+pub(crate) fn update_slice<T: Send>(items: &mut [T], f: impl Fn(&mut T) + Sync + Send) {
+    #[cfg(feature = "parallel")]
+    if items.len() >= MIN_PARALLEL {
+        use rayon::prelude::*;
+        return items.par_iter_mut().with_min_len(4096).for_each(f);
+    }
+    items.iter_mut().for_each(f)
+}
+
 /// Sorts distinct values (so that stability cannot matter).
 pub(crate) fn sort_unstable(items: &mut [u64]) {
     #[cfg(feature = "parallel")]
@@ -77,4 +87,16 @@ pub(crate) fn map_chunks<T: Send>(
         return (0..n.div_ceil(chunk)).into_par_iter().map(|c| f(range(c))).collect();
     }
     (0..n.div_ceil(chunk)).map(|c| f(range(c))).collect()
+}
+
+/// How many times to halve `n` points for the divide-and-conquer triangulation
+/// (`delaunay::divide`): until every thread of the current pool has a part (at most 16
+/// parts), from 2^16 points on; 0 (insert them one by one) on one thread or fewer points.
+pub(crate) fn halvings(n: usize) -> u32 {
+    #[cfg(feature = "parallel")]
+    if n >= 1 << 16 {
+        return rayon::current_num_threads().min(16).next_power_of_two().trailing_zeros();
+    }
+    let _ = n;
+    0
 }

@@ -87,12 +87,14 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
         layers.push(("boundary", boundary));
     }
     layers.push(("result", &rec.edges));
-    // The trace's triangles are the triangulation's; without a trace they are made here.
+    // The trace's triangles are the triangulation's, in an order that does not depend on
+    // how its arrays are laid out (which varies with the thread count); without a trace
+    // they are made here in the same order.
     let made;
     let triangles: &[[usize; 3]] = match &trace {
         Some(trace) => &trace.triangles,
         None => {
-            made = dt.input_triangles();
+            made = in_canonical_order(dt.input_triangles());
             &made
         }
     };
@@ -151,6 +153,17 @@ fn too_many_to_view(input: &Path, n: usize) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// `triangles`, each from its smallest index (counter-clockwise kept), sorted: the order of
+/// `sigdt::Trace::triangles`.
+fn in_canonical_order(mut triangles: Vec<[usize; 3]>) -> Vec<[usize; 3]> {
+    for t in &mut triangles {
+        let k = (0..3).min_by_key(|&i| t[i]).unwrap_or(0);
+        t.rotate_left(k);
+    }
+    triangles.sort_unstable();
+    triangles
 }
 
 #[cfg(test)]

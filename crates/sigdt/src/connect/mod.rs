@@ -86,7 +86,7 @@ pub(crate) fn outline(
     let inside_vertices = bd.interior_vertices();
     let (inside, edges) = bd.into_labels_and_edges();
     let loops = vertex_loops(dt, &inside, &edges);
-    (Outline { loops, inside: inside_vertices, stats }, trace)
+    (Outline { loops, inside: inside_vertices, stats }, trace.map(Trace::in_canonical_order))
 }
 
 impl Outline {

@@ -84,6 +84,29 @@ pub struct Trace {
 }
 
 impl Trace {
+    /// The same trace with its triangles in one order whatever the layout of the
+    /// triangulation's arrays (which differs with the thread count, `delaunay::divide`):
+    /// each triangle from its smallest input index (counter-clockwise kept), sorted; the
+    /// initial labels and the steps follow them.
+    pub(crate) fn in_canonical_order(mut self) -> Trace {
+        let rotated: Vec<[usize; 3]> = (self.triangles.iter())
+            .map(|t| {
+                let k = (0..3).min_by_key(|&i| t[i]).unwrap_or(0);
+                [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+            })
+            .collect();
+        let mut order: Vec<usize> = (0..rotated.len()).collect();
+        order.sort_unstable_by_key(|&t| rotated[t]);
+        let mut rank = vec![0; order.len()];
+        for (new, &old) in order.iter().enumerate() {
+            rank[old] = new;
+        }
+        self.triangles = order.iter().map(|&t| rotated[t]).collect();
+        self.initial_inside = order.iter().map(|&t| self.initial_inside[t]).collect();
+        self.steps.iter_mut().for_each(|s| s.triangle = rank[s.triangle]);
+        self
+    }
+
     /// The labels after the first `step` steps (all of them if `step` is larger).
     pub fn inside_at(&self, step: usize) -> Vec<bool> {
         let mut inside = self.initial_inside.clone();

@@ -17,14 +17,17 @@ impl Triangulation {
     /// # Errors
     /// [`Error::NonFinite`] for NaN or infinite coordinates, [`Error::CoordinateRange`] when
     /// the coordinates span more than about 2^172, [`Error::TooManyPoints`] past `u32`.
+    ///
+    /// On a pool of several threads and from 2^16 points, the points are divided among the
+    /// threads and the parts' triangulations merged (module `divide`): the same vertices
+    /// and triangles, stored in another order.
     pub fn new(points: &[Point]) -> Result<Triangulation> {
-        Triangulation::build(Cow::Borrowed(points), 0)
+        Triangulation::build(Cow::Borrowed(points), crate::parallel::halvings(points.len()))
     }
 
     /// [`new`](Self::new) divided `halvings` times and conquered on the current pool
-    /// (module `divide`): the same vertices and triangles in another layout. Not yet what
-    /// `new` does: on curves the parts' insertion costs more than the threads save
-    /// (`docs/algorithms.md` §7.6); the tests and `make bench` measure it.
+    /// (module `divide`), whatever the number of points or threads: for the tests that it
+    /// builds the same triangulation, and `make bench`.
     #[doc(hidden)]
     pub fn new_divided(points: &[Point], halvings: u32) -> Result<Triangulation> {
         Triangulation::build(Cow::Borrowed(points), halvings)
@@ -33,7 +36,8 @@ impl Triangulation {
     /// [`new`](Self::new) on points it owns, which it frees once they are copied into
     /// insertion order, before the triangulation's arrays are allocated.
     pub(crate) fn from_vec(points: Vec<Point>) -> Result<Triangulation> {
-        Triangulation::build(Cow::Owned(points), 0)
+        let halvings = crate::parallel::halvings(points.len());
+        Triangulation::build(Cow::Owned(points), halvings)
     }
 
     fn build(points: Cow<'_, [Point]>, halvings: u32) -> Result<Triangulation> {
@@ -114,20 +118,25 @@ fn proper(
     // Reorder once: the points in insertion order, read sequentially from here on.
     let points = crate::parallel::map_slice(&order, |&i| scaling.apply(input[i as usize]));
     drop(input);
-    let divided = (halvings > 0).then(|| triangulate_divided(&points, &order, halvings));
-    if let Some(built) = divided.flatten() {
-        return Ok(Triangulation {
-            points: built.points,
-            input_index: built.input_index,
-            triangles: built.triangles,
-            halfedges: built.halfedges,
-            vertex_halfedge: built.vertex_halfedge,
-            duplicates: built.duplicates,
-            input_len: n,
-            shape: Shape::Proper,
-            scaling,
-        });
-    }
+    let points = match halvings {
+        0 => points,
+        _ => match triangulate_divided(points, &order, halvings) {
+            Err(points) => points,
+            Ok(built) => {
+                return Ok(Triangulation {
+                    points: built.points,
+                    input_index: built.input_index,
+                    triangles: built.triangles,
+                    halfedges: built.halfedges,
+                    vertex_halfedge: built.vertex_halfedge,
+                    duplicates: built.duplicates,
+                    input_len: n,
+                    shape: Shape::Proper,
+                    scaling,
+                })
+            }
+        },
+    };
     let mut dt = Dt::new(points);
     // `order` becomes `input_index` in place: vertex `v` is written at `v <= k`.
     let mut input_index = order;

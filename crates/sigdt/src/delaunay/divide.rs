@@ -13,7 +13,9 @@
 //! order), input indices and duplicates likewise; the triangles are stored in another
 //! layout, which no stage after the triangulation depends on
 //! (`tests/layout_independence.rs`). A half with all its points on a line, or a merge that
-//! fails its checks, gives `None`, and the caller inserts the points one by one instead.
+//! fails its checks, gives the points back, and the caller inserts them one by one.
+//! `Triangulation::new` divides from 2^16 points on a pool of several threads
+//! (`crate::parallel::halvings`); measurements in `docs/algorithms.md` §7.6.
 //!
 //! # Complexity
 //! O(n log n) expected work, as the insertion, in parts of n / 2^d points on 2^d threads;
@@ -41,47 +43,51 @@ pub(super) struct Built {
 }
 
 /// A part's triangulation in the positions of its vertices' first occurrences, and each
-/// of its positions with the position of the first occurrence of its point.
+/// of its positions that repeats an earlier point with the position of its first occurrence.
 struct Piece {
     part: Part,
-    first_of: Vec<(u32, u32)>,
+    repeats: Vec<(u32, u32)>,
 }
 
 /// Triangulates `points` (scaled, in canonical insertion order, the first three spanning a
-/// triangle; `input[k]` the input index of position `k`) in `2^levels` parts; `None` when
-/// the parts cannot be used (module docs).
-pub(super) fn triangulate_divided(points: &[Point], input: &[u32], levels: u32) -> Option<Built> {
+/// triangle; `input[k]` the input index of position `k`) in `2^levels` parts; the points
+/// back when the parts cannot be used (module docs).
+pub(super) fn triangulate_divided(
+    mut points: Vec<Point>,
+    input: &[u32],
+    levels: u32,
+) -> Result<Built, Vec<Point>> {
     let n = points.len();
     let all: Vec<u32> = (0..n as u32).collect();
-    let Piece { part, first_of } = piece(points, all, levels)?;
-    // Vertices: the first occurrences, numbered in canonical order.
-    let mut first = vec![u32::MAX; n];
-    for (k, f) in first_of {
-        first[k as usize] = f;
+    let Some(Piece { part, repeats }) = piece(&points, all, levels) else {
+        return Err(points);
+    };
+    // Each position's first occurrence, then, in place and in canonical order, its vertex:
+    // a first occurrence is the next vertex, a later one has its first's (already numbered).
+    let mut vertex: Vec<u32> = (0..n as u32).collect();
+    for (k, f) in repeats {
+        vertex[k as usize] = f;
     }
-    let mut vertex_of_position = vec![u32::MAX; n];
-    let mut vertex_points = Vec::new();
+    let mut vertices = 0;
     for k in 0..n {
-        if first[k] == k as u32 {
-            vertex_of_position[k] = vertex_points.len() as u32;
-            vertex_points.push(points[k]);
-        }
+        let first = vertex[k] as usize;
+        vertex[k] = if first == k {
+            points[vertices] = points[k]; // the vertex positions, compacted in place
+            vertices += 1;
+            vertices as u32 - 1
+        } else {
+            vertex[first]
+        };
     }
-    let vertex_of = |k: usize| vertex_of_position[first[k] as usize];
-    let (input_index, duplicates) = representatives(n, vertex_points.len(), input, vertex_of);
-    drop(first);
-    let Part { triangles, halfedges } = part;
-    let triangles = crate::parallel::map_slice(&triangles, |&k| vertex_of_position[k as usize]);
-    drop(vertex_of_position);
-    let vertex_halfedge = vertex_halfedges(vertex_points.len(), &triangles, &halfedges);
-    Some(Built {
-        points: vertex_points,
-        input_index,
-        triangles,
-        halfedges,
-        vertex_halfedge,
-        duplicates,
-    })
+    points.truncate(vertices);
+    points.shrink_to_fit();
+    let (input_index, duplicates) = representatives(n, vertices, input, |k| vertex[k]);
+    // The parts number their vertices by first occurrence, which is now its vertex.
+    let Part { mut triangles, halfedges } = part;
+    crate::parallel::update_slice(&mut triangles, |v| *v = vertex[*v as usize]);
+    drop(vertex);
+    let vertex_halfedge = vertex_halfedges(vertices, &triangles, &halfedges);
+    Ok(Built { points, input_index, triangles, halfedges, vertex_halfedge, duplicates })
 }
 
 /// The triangulation of the points at positions `members` (canonical order): split and
@@ -96,10 +102,10 @@ fn piece(points: &[Point], members: Vec<u32>, levels: u32) -> Option<Piece> {
         || piece(points, right, levels - 1),
     );
     let (left, right) = (left?, right?);
-    let mut first_of = left.first_of;
-    first_of.extend(right.first_of);
+    let mut repeats = left.repeats;
+    repeats.extend(right.repeats);
     let part = merge(points, left.part, right.part)?;
-    Some(Piece { part, first_of })
+    Some(Piece { part, repeats })
 }
 
 /// `members` split at the lexicographic median of their points, each half in canonical
@@ -112,7 +118,32 @@ fn halves(points: &[Point], members: Vec<u32>) -> Option<(Vec<u32>, Vec<u32>)> {
     drop(sorted);
     let (left, right): (Vec<u32>, Vec<u32>) =
         members.into_iter().partition(|k| lexicographic(k, &pivot).is_lt());
-    (left.len() >= 3 && right.len() >= 3).then_some((left, right))
+    if left.len() < 3 || right.len() < 3 {
+        return None;
+    }
+    let cut = points[pivot as usize][0];
+    Some((near_cut_first(points, left, cut), near_cut_first(points, right, cut)))
+}
+
+/// The share of a half's points, nearest the cut, inserted before the rest.
+const NEAR_CUT_SHARE: usize = 512;
+
+/// `part` with its [`NEAR_CUT_SHARE`]th of points nearest the line `x = cut` moved to the
+/// front, each group in canonical order. This changes no triangle, only the work: a half
+/// of a curve is open at the cut, and inserted in canonical order the curve's points near
+/// the cut arrive late, each outside the hull across the wide mouth, and flip a long fan
+/// of the triangles spanning it (one half of a smooth closed curve of 10⁶ points took 517
+/// ms, nearly what all the points take). Inserted first, they close the mouth: 222 ms, as
+/// the other half (`docs/algorithms.md` §7.6).
+fn near_cut_first(points: &[Point], part: Vec<u32>, cut: f64) -> Vec<u32> {
+    let count = (part.len() / NEAR_CUT_SHARE).max(3).min(part.len() - 1);
+    let off = |k: u32| (points[k as usize][0] - cut).abs();
+    let mut offsets: Vec<f64> = part.iter().map(|&k| off(k)).collect();
+    let (_, &mut bound, _) = offsets.select_nth_unstable_by(count, f64::total_cmp);
+    drop(offsets);
+    let (mut near, far): (Vec<u32>, Vec<u32>) = part.into_iter().partition(|&k| off(k) < bound);
+    near.extend(far);
+    near
 }
 
 /// The points at `members` inserted one by one; `None` if they are collinear.
@@ -122,16 +153,16 @@ fn inserted(points: &[Point], members: Vec<u32>) -> Option<Piece> {
         return None;
     }
     let mut dt = Dt::new(order.iter().map(|&k| points[k as usize]).collect());
-    // The first position of each local vertex, and each position's first occurrence.
+    // The first position of each local vertex; the positions that repeat one.
     let mut first_position: Vec<u32> = order[..3].to_vec();
-    let mut first_of: Vec<(u32, u32)> = order[..3].iter().map(|&k| (k, k)).collect();
+    let mut repeats: Vec<(u32, u32)> = Vec::new();
     let mut hint = 2;
     for (j, &k) in order.iter().enumerate().skip(3) {
         let (v, new) = dt.insert(j, hint);
-        if new {
-            first_position.push(k);
+        match new {
+            true => first_position.push(k),
+            false => repeats.push((k, first_position[v as usize])),
         }
-        first_of.push((k, first_position[v as usize]));
         hint = v;
     }
     drop(order);
@@ -140,7 +171,7 @@ fn inserted(points: &[Point], members: Vec<u32>) -> Option<Piece> {
         *v = first_position[*v as usize];
     }
     debug_assert!(halfedges.iter().all(|&h| h == EMPTY || (h as usize) < triangles.len()));
-    Some(Piece { part: Part { triangles, halfedges }, first_of })
+    Some(Piece { part: Part { triangles, halfedges }, repeats })
 }
 
 /// Each vertex's input index (the lowest of its duplicates) and the `[duplicate,

@@ -66,11 +66,12 @@ struct Merge<'a> {
     twin: Vec<u32>,
     /// Triangles of the parts (below this slot); the new ones follow.
     original: u32,
-    dead: Vec<bool>,
+    /// The parts' triangles deleted, a bit each.
+    dead: Bits,
     /// Original edges deleted, marked on both half-edges.
-    gone: Vec<bool>,
+    gone: Bits,
     /// Original half-edges with a new triangle on their left in place of theirs.
-    covered: Vec<bool>,
+    covered: Bits,
     /// New half-edges twinned with a part's at the end: the walk reads the parts' own
     /// twins throughout, so that it rotates over their triangles only.
     links: Vec<(u32, u32)>,
@@ -85,15 +86,18 @@ struct Merge<'a> {
 pub(super) fn merge(points: &[Point], left: Part, right: Part) -> Option<Part> {
     let Part { triangles: mut tri, halfedges: mut twin } = left;
     let offset = tri.len() as u32;
-    tri.extend_from_slice(&right.triangles);
-    twin.extend(right.halfedges.iter().map(|&h| if h == EMPTY { EMPTY } else { h + offset }));
-    drop(right);
+    // Each of the right's arrays is freed as soon as it is appended: the peak of the merge.
+    let Part { triangles, halfedges } = right;
+    tri.extend_from_slice(&triangles);
+    drop(triangles);
+    twin.extend(halfedges.iter().map(|&h| if h == EMPTY { EMPTY } else { h + offset }));
+    drop(halfedges);
     let original = tri.len() as u32;
     let mut m = Merge {
         points,
-        dead: vec![false; original as usize / 3],
-        gone: vec![false; original as usize],
-        covered: vec![false; original as usize],
+        dead: Bits::new(original / 3),
+        gone: Bits::new(original),
+        covered: Bits::new(original),
         links: Vec::new(),
         tri,
         twin,
@@ -195,7 +199,7 @@ impl Merge<'_> {
 
     /// Whether `h` is a half-edge of a part's triangle that is still alive.
     fn alive(&self, h: u32) -> bool {
-        h != EMPTY && !self.dead[h as usize / 3]
+        h != EMPTY && !self.dead.get(h / 3)
     }
 
     /// The hull half-edge into the origin of hull half-edge `h`.
@@ -237,7 +241,7 @@ impl Merge<'_> {
     }
 
     fn is_gone(&self, e: Entry) -> bool {
-        self.gone[(if e.out == EMPTY { e.inn } else { e.out }) as usize]
+        self.gone.get(if e.out == EMPTY { e.inn } else { e.out })
     }
 
     /// The first edge counter-clockwise after `e` around `apex` that was not deleted;
@@ -277,10 +281,10 @@ impl Merge<'_> {
     fn left_beyond(&self, e: Entry) -> Option<u32> {
         let mut f = e;
         for _ in 0..self.original {
-            if f.out == EMPTY || self.covered[f.out as usize] {
+            if f.out == EMPTY || self.covered.get(f.out) {
                 return None;
             }
-            if !self.dead[f.out as usize / 3] {
+            if !self.dead.get(f.out / 3) {
                 return Some(self.tri[prev(f.out) as usize]);
             }
             f = self.ccw_step(f);
@@ -295,10 +299,10 @@ impl Merge<'_> {
     fn right_beyond(&self, e: Entry) -> Option<u32> {
         let mut f = e;
         for _ in 0..self.original {
-            if f.inn == EMPTY || self.covered[f.inn as usize] {
+            if f.inn == EMPTY || self.covered.get(f.inn) {
                 return None;
             }
-            if !self.dead[f.inn as usize / 3] {
+            if !self.dead.get(f.inn / 3) {
                 return Some(self.tri[prev(f.inn) as usize]);
             }
             f = self.cw_step(f);
@@ -311,11 +315,11 @@ impl Merge<'_> {
 
     /// Deletes the edge of half-edge `h`: the triangle of `h` dies.
     fn delete(&mut self, h: u32) {
-        self.dead[h as usize / 3] = true;
-        self.gone[h as usize] = true;
+        self.dead.set(h / 3, true);
+        self.gone.set(h, true);
         let t = self.twin[h as usize];
         if t != EMPTY {
-            self.gone[t as usize] = true;
+            self.gone.set(t, true);
         }
     }
 
@@ -338,7 +342,7 @@ impl Merge<'_> {
     /// triangle on the edge's other side.
     fn attach(&mut self, s: u32, h: u32, beside: u32) {
         if beside != EMPTY {
-            self.covered[beside as usize] = true;
+            self.covered.set(beside, true);
         }
         match self.alive(h) {
             true => self.links.push((s, h)),
@@ -352,7 +356,7 @@ impl Merge<'_> {
         // A link to a triangle that died after it was made (the edge's other side was
         // cleared later) waits like a bare edge.
         for (s, h) in std::mem::take(&mut self.links) {
-            match self.dead[h as usize / 3] {
+            match self.dead.get(h / 3) {
                 true => self.pending.push(s),
                 false => {
                     self.twin[s as usize] = h;
@@ -374,14 +378,14 @@ impl Merge<'_> {
             }
         }
         for t in 0..self.original / 3 {
-            if !self.dead[t as usize] {
+            if !self.dead.get(t) {
                 continue;
             }
             for s in 3 * t..3 * t + 3 {
                 let o = self.twin[s as usize];
                 if o != EMPTY
                     && self.twin[o as usize] == s
-                    && (o >= self.original || !self.dead[o as usize / 3])
+                    && (o >= self.original || !self.dead.get(o / 3))
                 {
                     return None; // a live triangle would face a dead one
                 }
@@ -389,8 +393,8 @@ impl Merge<'_> {
         }
         // Fill each dead triangle with the last live one.
         let mut count = self.tri.len() as u32 / 3;
-        let dead: Vec<u32> = (0..self.original / 3).filter(|&t| self.dead[t as usize]).collect();
-        let is_dead = |m: &Self, t: u32| t < m.original / 3 && m.dead[t as usize];
+        let dead: Vec<u32> = (0..self.original / 3).filter(|&t| self.dead.get(t)).collect();
+        let is_dead = |m: &Self, t: u32| t < m.original / 3 && m.dead.get(t);
         for &hole in dead.iter().rev() {
             // Drop dead triangles at the end first.
             while count > 0 && is_dead(&self, count - 1) {
@@ -409,11 +413,35 @@ impl Merge<'_> {
                     self.twin[t as usize] = to as u32;
                 }
             }
-            self.dead[hole as usize] = false;
+            self.dead.set(hole, false);
             count -= 1;
         }
         self.tri.truncate(3 * count as usize);
         self.twin.truncate(3 * count as usize);
         Some(Part { triangles: self.tri, halfedges: self.twin })
+    }
+}
+
+/// A fixed number of bits, false at first: an eighth of the memory of `Vec<bool>` for the
+/// merge's marks on every half-edge of the parts.
+struct Bits(Vec<u64>);
+
+impl Bits {
+    fn new(len: u32) -> Bits {
+        Bits(vec![0; (len as usize).div_ceil(64)])
+    }
+
+    #[inline]
+    fn get(&self, i: u32) -> bool {
+        crate::bits::word_bit(&self.0, i)
+    }
+
+    #[inline]
+    fn set(&mut self, i: u32, value: bool) {
+        let (word, bit) = ((i / 64) as usize, i % 64);
+        match value {
+            true => self.0[word] |= 1 << bit,
+            false => self.0[word] &= !(1 << bit),
+        }
     }
 }
