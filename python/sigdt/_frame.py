@@ -24,8 +24,6 @@ from .errors import InvalidInputError
 
 if TYPE_CHECKING:  # pragma: no cover
     from geopandas import GeoDataFrame
-
-    from ._result import Reconstruction
 else:
     GeoDataFrame = Any
 

@@ -90,8 +90,10 @@ pub(super) fn triangulate_divided(
     Ok(Built { points, input_index, triangles, halfedges, vertex_halfedge, duplicates })
 }
 
-/// The triangulation of the points at positions `members` (canonical order): split and
-/// merged `levels` times, then inserted one by one.
+/// The triangulation of the points at positions `members` (in canonical order, or as the
+/// split above ordered them): split and merged `levels` times, then inserted one by one.
+/// Equal points keep their canonical order through every split, so the first copy of a
+/// point a part inserts is its first occurrence.
 fn piece(points: &[Point], members: Vec<u32>, levels: u32) -> Option<Piece> {
     if levels == 0 {
         return inserted(points, members);
@@ -108,8 +110,9 @@ fn piece(points: &[Point], members: Vec<u32>, levels: u32) -> Option<Piece> {
     Some(Piece { part, repeats })
 }
 
-/// `members` split at the lexicographic median of their points, each half in canonical
-/// order; equal points go to the same half. `None` if a half would hold fewer than three.
+/// `members` split at the lexicographic median of their points, each half in the order of
+/// `members` but for its points nearest the cut, which go first ([`near_cut_first`]);
+/// equal points go to the same half and group. `None` if a half would hold fewer than three.
 fn halves(points: &[Point], members: Vec<u32>) -> Option<(Vec<u32>, Vec<u32>)> {
     let lexicographic = |a: &u32, b: &u32| lexicographic(points[*a as usize], points[*b as usize]);
     let mut sorted = members.clone();
@@ -129,7 +132,7 @@ fn halves(points: &[Point], members: Vec<u32>) -> Option<(Vec<u32>, Vec<u32>)> {
 const NEAR_CUT_SHARE: usize = 512;
 
 /// `part` with its [`NEAR_CUT_SHARE`]th of points nearest the line `x = cut` moved to the
-/// front, each group in canonical order. This changes no triangle, only the work: a half
+/// front, each group in the order of `part`. This changes no triangle, only the work: a half
 /// of a curve is open at the cut, and inserted in canonical order the curve's points near
 /// the cut arrive late, each outside the hull across the wide mouth, and flip a long fan
 /// of the triangles spanning it (one half of a smooth closed curve of 10⁶ points took 517
