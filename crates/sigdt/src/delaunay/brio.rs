@@ -14,10 +14,13 @@
 //! Hilbert-cell ties by coordinates, so the order depends on the point set alone: the vertex
 //! and triangle numbering that insertion produces is the same for every order of the input.
 //! [`brio_order_within`] (CRUST's second triangulation) shuffles with a fixed seed instead.
+//! [`put_first_triangle_first`] then moves three points that span a triangle to the front,
+//! for the insertion of all the points and of each part of a divided triangulation.
 //!
 //! # Complexity
 //! O(n log n) for the sorts.
 
+use crate::geometry::{orient2d, Point};
 use std::cmp::Ordering;
 
 /// Fixed seed of the shuffle and the coordinate hash: results are reproducible bit for bit.
@@ -246,6 +249,23 @@ fn shuffle<T>(items: &mut [T], seed: u64) {
         let j = (z % (i as u64 + 1)) as usize;
         items.swap(i, j);
     }
+}
+
+/// Moves to the front of `order` the first three points in it that span a triangle: the
+/// first point, the first point different from it, and the first point off the line through
+/// both; the rest keep their order. `false` if all points are collinear (or fewer than three
+/// are distinct).
+///
+/// Inserting these first matters: spade's insertion is quadratic while all its vertices are
+/// collinear.
+pub(super) fn put_first_triangle_first(order: &mut [u32], p: impl Fn(u32) -> Point) -> bool {
+    let Some(&a) = order.first() else { return false };
+    let Some(b) = (1..order.len()).find(|&k| p(order[k]) != p(a)) else { return false };
+    let off_line = |&k: &usize| orient2d(p(a), p(order[b]), p(order[k])) != 0.0;
+    let Some(c) = (b + 1..order.len()).find(off_line) else { return false };
+    order[1..=b].rotate_right(1);
+    order[2..=c].rotate_right(1);
+    true
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! Building a [`Triangulation`]: hygiene, degenerate shapes, then the points copied once into
 //! BRIO order and inserted one by one into the flat arrays (module `incremental`).
-use super::brio::canonical_order;
+use super::brio::{canonical_order, put_first_triangle_first};
 use super::divide::triangulate_divided;
 use super::hygiene::Scaling;
 use super::incremental::Dt;
@@ -8,7 +8,7 @@ use super::relabel::vertex_halfedges;
 use super::{Shape, Triangulation, EMPTY};
 use crate::error::{Error, Result};
 use crate::geometry::Edge;
-use crate::geometry::{orient2d, Point};
+use crate::geometry::Point;
 use std::borrow::Cow;
 
 impl Triangulation {
@@ -55,23 +55,6 @@ impl Triangulation {
             Ok(on_a_line(points.len(), scaled, scaling))
         }
     }
-}
-
-/// Moves to the front of `order` the first three points in it that span a triangle: the
-/// first point, the first point different from it, and the first point off the line through
-/// both; the rest keep their order. `false` if all points are collinear (or fewer than three
-/// are distinct).
-///
-/// Inserting these first matters: spade's insertion is quadratic while all its vertices are
-/// collinear.
-pub(super) fn put_first_triangle_first(order: &mut [u32], p: impl Fn(u32) -> Point) -> bool {
-    let Some(&a) = order.first() else { return false };
-    let Some(b) = (1..order.len()).find(|&k| p(order[k]) != p(a)) else { return false };
-    let off_line = |&k: &usize| orient2d(p(a), p(order[b]), p(order[k])) != 0.0;
-    let Some(c) = (b + 1..order.len()).find(off_line) else { return false };
-    order[1..=b].rotate_right(1);
-    order[2..=c].rotate_right(1);
-    true
 }
 
 /// Collinear input and fewer than three distinct points: vertices sorted along the line

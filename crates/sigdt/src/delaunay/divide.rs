@@ -21,7 +21,7 @@
 //! O(n log n) expected work, as the insertion, in parts of n / 2^d points on 2^d threads;
 //! each merge is linear in the triangles it adds and removes (O(√n) on uniform points),
 //! plus a scan of its parts' hull half-edges.
-use super::build::put_first_triangle_first;
+use super::brio::put_first_triangle_first;
 use super::incremental::Dt;
 use super::merge::{merge, Part};
 use super::perturbation::lexicographic;
