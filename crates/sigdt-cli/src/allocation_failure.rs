@@ -10,12 +10,14 @@
 //! `sigdt: out of memory: ...`, naming the size that failed and the address-space limit.
 //!
 //! Implementing [`GlobalAlloc`] is unsafe by definition; besides the speed benchmark's
-//! counting allocator, this is the workspace's only `unsafe`. Every method forwards to
+//! counting allocator and the one call of [`large_blocks`], this is the workspace's only
+//! `unsafe`. Every method forwards to
 //! [`System`] unchanged; the failure path allocates nothing (the message is formatted on
 //! the stack, the temporary files are removed with the lock taken only if it is free) and
 //! never unwinds.
 //!
 //! [`memory::check`]: crate::memory
+//! [`large_blocks`]: crate::large_blocks
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::fmt::Write as _;

@@ -24,6 +24,7 @@ mod gis_output;
 mod groups;
 mod input;
 mod labelled;
+mod large_blocks;
 mod memory;
 mod messages;
 mod methods;
@@ -33,6 +34,7 @@ mod progress;
 mod view;
 
 pub use allocation_failure::ExitOnAllocationFailure;
+pub use large_blocks::return_large_blocks_to_the_system;
 
 use std::ffi::OsString;
 use std::io::Write;

@@ -8,5 +8,7 @@ use std::process::ExitCode;
 static ALLOCATOR: sigdt_cli::ExitOnAllocationFailure = sigdt_cli::ExitOnAllocationFailure;
 
 fn main() -> ExitCode {
+    // Freed arrays leave the process, so threads' arenas do not keep them resident.
+    sigdt_cli::return_large_blocks_to_the_system();
     ExitCode::from(sigdt_cli::run(std::env::args_os()))
 }
