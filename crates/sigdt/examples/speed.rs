@@ -29,6 +29,10 @@
 //!   (`Triangulation::new_divided`, one part a thread, joined by the Guibas–Stolfi merge) on
 //!   the pool of `T` threads, as `reconstruct` builds it there; `Delaunay/divided` is the
 //!   one-thread insertion over it. Its triangle count is checked.
+//! - `default ms`, `default {T} threads ms`: the same for the default method, SIG-AUTO
+//!   (`Options::default()`), on one thread and on `T`; `default/CGAL` is the `T`-thread
+//!   time over CGAL's one-thread triangulation. The `T`-thread result is checked to equal
+//!   the one-thread result.
 //! - `peak bytes/point`: heap high-water mark of one one-thread `reconstruct` call beyond
 //!   what the process held before it (the input points excluded), counted exactly by a
 //!   pass-through allocator; `T threads peak` the same on the pool of `T` threads (where
@@ -45,7 +49,9 @@
 //! one thread (`RAYON_NUM_THREADS=1`) and with `T`, and `cgal-delaunay FILE` (read and triangulate) run
 //! in turn `R` times under `/usr/bin/time`: median wall seconds, and the peak resident memory
 //! (`%M`) per point of `sigdt reconstruct`; then `sigdt view FILE -o PAGE` (its median time
-//! and the page's size) and `sigdt render FILE -o PICTURE.png`, each with `T` threads.
+//! and the page's size) and `sigdt render FILE -o PICTURE.png`, each with `T` threads; and
+//! the default method (`sigdt reconstruct FILE -o OUT`) with `T` threads, its time over
+//! CGAL's in `default / CGAL`.
 use rayon::{ThreadPool, ThreadPoolBuilder};
 use sigdt::samplers::{random_closed_curve, spiral_band, Sample};
 use sigdt::{Method, Options, Point, Triangulation};
@@ -87,9 +93,10 @@ fn main() -> Res<()> {
     println!(
         "| input | order | n | Delaunay ms | total ms | total/Delaunay | CGAL ms | total/CGAL \
          | ns/point | {t} threads ms | speed-up | divided ms | Delaunay/divided \
+         | default ms | default {t} threads ms | default/CGAL \
          | peak bytes/point | {t} threads peak | exact |"
     );
-    println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|");
+    println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|:-:|");
     let one = ThreadPoolBuilder::new().num_threads(1).build()?;
     let many = ThreadPoolBuilder::new().num_threads(t).build()?;
     let dir = std::env::temp_dir().join(format!("sigdt-speed-{}", std::process::id()));
@@ -115,16 +122,19 @@ fn main() -> Res<()> {
                 let peak_many = many.install(|| peak_memory(&sample.points))?;
                 let (dt, total, total_t) = (m.delaunay * 1e3, m.total * 1e3, m.total_many * 1e3);
                 let divided = m.divided * 1e3;
+                let (auto, auto_t) = (m.default * 1e3, m.default_many * 1e3);
                 let cgal_ms = m.cgal.map(|c| c * 1e3);
                 println!(
                     "| {name} | {order} | {n} | {dt:.2} | {total:.2} | {:.2} | {} | {} | {:.0} \
-                     | {total_t:.2} | {:.2} | {divided:.2} | {:.2} | {:.0} | {:.0} | {} |",
+                     | {total_t:.2} | {:.2} | {divided:.2} | {:.2} | {auto:.2} | {auto_t:.2} | {} \
+                     | {:.0} | {:.0} | {} |",
                     total / dt,
                     cgal_ms.map_or("n/a".into(), |c| format!("{c:.2}")),
                     cgal_ms.map_or("n/a".into(), |c| format!("{:.2}", total / c)),
                     total * 1e6 / n as f64,
                     total / total_t,
                     dt / divided,
+                    cgal_ms.map_or("n/a".into(), |c| format!("{:.2}", auto_t / c)),
                     peak as f64 / n as f64,
                     peak_many as f64 / n as f64,
                     if m.exact { "yes" } else { "no" },
@@ -146,10 +156,11 @@ fn main() -> Res<()> {
         println!();
         println!(
             "| input | order | n | `sigdt reconstruct` s, 1 thread | {t} threads s | speed-up \
-             | `cgal-delaunay` s | sigdt (1 thread) / CGAL | peak RSS bytes/point \
-             | `sigdt view` s | its page MB | `sigdt render` (PNG) s |"
+             | `cgal-delaunay` s | sigdt (1 thread) / CGAL | default, {t} threads s \
+             | default / CGAL | peak RSS bytes/point | `sigdt view` s | its page MB \
+             | `sigdt render` (PNG) s |"
         );
-        println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
+        println!("|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
         for row in process_rows {
             println!("{row}");
         }
@@ -164,6 +175,9 @@ struct Measured {
     total: f64,
     total_many: f64,
     divided: f64,
+    /// The default method (SIG-AUTO) on one thread and on the pool.
+    default: f64,
+    default_many: f64,
     cgal: Option<f64>,
     reps: usize,
     exact: bool,
@@ -184,17 +198,20 @@ fn measure(
     let halvings = many.current_num_threads().next_power_of_two().trailing_zeros();
     let divided = || many.install(|| time(|| Triangulation::new_divided(points, halvings)));
     let total = |pool: &ThreadPool| pool.install(|| time(|| sigdt::reconstruct(points, &options)));
+    let default = Options::default();
+    let auto = |pool: &ThreadPool| pool.install(|| time(|| sigdt::reconstruct(points, &default)));
     // Warm-up: also checks the output and sizes the number of repetitions.
     let (first_dt, dt) = delaunay()?;
     drop(dt);
     let (first_total, rec) = total(one)?;
     let exact = rec.edges == sample.edges;
+    let (_, auto_rec) = auto(one)?;
     let reps = reps.unwrap_or_else(|| {
         let needed = (MIN_SECONDS / first_dt.min(first_total)).ceil();
         (needed.min(MAX_REPS as f64) as usize).max(MIN_REPS)
     });
     let (mut dts, mut totals, mut manys, mut cgals) = (vec![], vec![], vec![], vec![]);
-    let mut divideds = vec![];
+    let (mut divideds, mut autos, mut autos_many) = (vec![], vec![], vec![]);
     for _ in 0..reps {
         let (t, dt) = delaunay()?;
         dts.push(t);
@@ -213,6 +230,15 @@ fn measure(
             return Err("the result on several threads differs from the one-thread result".into());
         }
         drop(r);
+        let (t, r) = auto(one)?;
+        autos.push(t);
+        drop(r);
+        let (t, r) = auto(many)?;
+        autos_many.push(t);
+        if r != auto_rec {
+            return Err("the default's result on several threads differs from one thread's".into());
+        }
+        drop(r);
         if let Some((tool, file)) = cgal {
             cgals.push(cgal_time(tool, file)?);
         }
@@ -222,6 +248,8 @@ fn measure(
         total: median(&mut totals),
         total_many: median(&mut manys),
         divided: median(&mut divideds),
+        default: median(&mut autos),
+        default_many: median(&mut autos_many),
         cgal: (!cgals.is_empty()).then(|| median(&mut cgals)),
         reps,
         exact,
@@ -270,19 +298,21 @@ fn whole_process(
         }
     };
     let o = Path::new("-o");
-    // The table is SIG-CONNECT2D's, as the in-process one; the CLI's default is SIG-AUTO.
+    // SIG-CONNECT2D, as in the in-process table; the default (SIG-AUTO) has its own column.
     let (method, name) = (Path::new("--method"), Path::new("sig-connect2d"));
     let reconstruct = [Path::new("reconstruct"), file, method, name, o, &out];
+    let default = [Path::new("reconstruct"), file, o, &out];
     let view = [Path::new("view"), file, o, &page];
     let render = [Path::new("render"), file, o, &picture];
     let reps = args.reps.unwrap_or(MIN_REPS);
     let (mut ones, mut manys, mut cgals, mut rss) = (vec![], vec![], vec![], vec![]);
-    let (mut views, mut renders) = (vec![], vec![]);
+    let (mut views, mut renders, mut defaults) = (vec![], vec![], vec![]);
     for _ in 0..reps {
         let (s, bytes) = run(cli, 1, &reconstruct)?;
         ones.push(s);
         rss.push(bytes);
         manys.push(run(cli, t, &reconstruct)?.0);
+        defaults.push(run(cli, t, &default)?.0);
         if let Some(c) = cgal {
             cgals.push(run(c, 1, &[file])?.0);
         }
@@ -292,6 +322,7 @@ fn whole_process(
         }
     }
     let (one, many, peak) = (median(&mut ones), median(&mut manys), median(&mut rss));
+    let auto = median(&mut defaults);
     let cgal = (!cgals.is_empty()).then(|| median(&mut cgals));
     let cell = |x: Option<f64>| x.map_or("n/a".into(), |x| format!("{x:.2}"));
     // A page of an earlier, smaller size may still lie there.
@@ -300,10 +331,11 @@ fn whole_process(
         false => Some(std::fs::metadata(&page)?.len() as f64 / 1e6),
     };
     Ok(format!(
-        "{one:.2} | {many:.2} | {:.2} | {} | {} | {:.0} | {} | {} | {} |",
+        "{one:.2} | {many:.2} | {:.2} | {} | {} | {auto:.2} | {} | {:.0} | {} | {} | {} |",
         one / many,
         cell(cgal),
         cell(cgal.map(|c| one / c)),
+        cell(cgal.map(|c| auto / c)),
         peak / n as f64,
         cell((!views.is_empty()).then(|| median(&mut views))),
         page_mb.map_or("n/a".into(), |mb| format!("{mb:.1}")),
