@@ -61,6 +61,21 @@ pub(crate) fn sort_unstable(items: &mut [u64]) {
     items.sort_unstable()
 }
 
+/// `f` on every run of consecutive items that `same` joins (as `chunk_by_mut`), in
+/// parallel from [`MIN_PARALLEL`] items on. Runs are disjoint, so the order does not matter.
+pub(crate) fn for_each_run<T: Send>(
+    items: &mut [T],
+    same: impl Fn(&T, &T) -> bool + Sync + Send,
+    f: impl Fn(&mut [T]) + Sync + Send,
+) {
+    #[cfg(feature = "parallel")]
+    if items.len() >= MIN_PARALLEL {
+        use rayon::prelude::*;
+        return items.par_chunk_by_mut(same).for_each(f);
+    }
+    items.chunk_by_mut(same).for_each(f)
+}
+
 /// `(a(), b())`, on two threads when the pool has them.
 pub(crate) fn join<A: Send, B: Send>(
     a: impl FnOnce() -> A + Send,

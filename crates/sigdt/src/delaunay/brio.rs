@@ -36,24 +36,28 @@ const HILBERT_BITS: u32 = 16;
 pub fn canonical_order(points: impl Fn(u32) -> [f64; 2] + Sync + Send, n: usize) -> Vec<u32> {
     let Some(bbox) = bounding_box((0..n as u32).map(&points)) else { return Vec::new() };
     let rounds = round_count(n);
-    let round_of: Vec<u8> = crate::parallel::map_range(n, |i| round_of(points(i as u32), rounds));
+    // Each point's `(round << 32) | key`, computed on the pool.
+    let round_key: Vec<u64> = crate::parallel::map_range(n, |i| {
+        let p = points(i as u32);
+        (u64::from(round_of(p, rounds)) << 32) | u64::from(hilbert_key(p, &bbox))
+    });
     // Counting sort by round (stable, so each round holds ascending indices), then a sort of
     // `(key << 32) | index` inside each round.
     let mut start = vec![0usize; usize::from(rounds) + 1];
-    for &r in &round_of {
-        start[usize::from(r) + 1] += 1;
+    for &rk in &round_key {
+        start[(rk >> 32) as usize + 1] += 1;
     }
     for r in 0..usize::from(rounds) {
         start[r + 1] += start[r];
     }
     let mut keyed = vec![0u64; n];
     let mut fill = start.clone();
-    for (i, &r) in round_of.iter().enumerate() {
-        let p = points(i as u32);
-        keyed[fill[usize::from(r)]] = (u64::from(hilbert_key(p, &bbox)) << 32) | i as u64;
-        fill[usize::from(r)] += 1;
+    for (i, &rk) in round_key.iter().enumerate() {
+        let r = (rk >> 32) as usize;
+        keyed[fill[r]] = (rk << 32) | i as u64;
+        fill[r] += 1;
     }
-    drop(round_of);
+    drop(round_key);
     for r in 0..usize::from(rounds) {
         let round = &mut keyed[start[r]..start[r + 1]];
         crate::parallel::sort_unstable(round);
@@ -75,18 +79,15 @@ pub fn hilbert_order(points: impl Fn(u32) -> [f64; 2] + Sync + Send, n: usize) -
 }
 
 /// Inside each run of equal Hilbert keys, orders the points by coordinates, then index.
-fn break_cell_ties(round: &mut [u64], points: &impl Fn(u32) -> [f64; 2]) {
-    let mut a = 0;
-    while a < round.len() {
-        let cell = round[a] >> 32;
-        let b = a + round[a..].iter().take_while(|&&k| k >> 32 == cell).count();
-        if b - a > 1 {
-            round[a..b].sort_unstable_by(|&j, &k| {
+fn break_cell_ties(round: &mut [u64], points: &(impl Fn(u32) -> [f64; 2] + Sync + Send)) {
+    let same_cell = |a: &u64, b: &u64| a >> 32 == b >> 32;
+    crate::parallel::for_each_run(round, same_cell, |cell| {
+        if cell.len() > 1 {
+            cell.sort_unstable_by(|&j, &k| {
                 lexicographic(points(j as u32), points(k as u32)).then(j.cmp(&k))
             });
         }
-        a = b;
-    }
+    });
 }
 
 /// Lexicographic order of coordinates, `-0.0` and `0.0` alike (they are the same point).

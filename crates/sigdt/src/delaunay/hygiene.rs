@@ -30,14 +30,12 @@ impl Scaling {
             return Err(Error::TooManyPoints { got: points.len(), max: u32::MAX as usize - 1 });
         }
         // Chunks are checked in parallel; the first chunk with a problem names the point.
-        let chunks = points.len().div_ceil(CHUNK);
-        let chunk = |c: usize| &points[c * CHUNK..((c + 1) * CHUNK).min(points.len())];
         let mut largest = 0.0f64;
-        let found = crate::parallel::map_range(chunks, |c| {
+        let found = crate::parallel::map_chunks(points.len(), CHUNK, |chunk| {
             let mut largest = 0.0f64;
-            for (k, &[x, y]) in chunk(c).iter().enumerate() {
+            for (index, &[x, y]) in chunk.clone().zip(&points[chunk]) {
                 if !x.is_finite() || !y.is_finite() {
-                    return Err(Error::NonFinite { index: c * CHUNK + k, x, y });
+                    return Err(Error::NonFinite { index, x, y });
                 }
                 largest = largest.max(x.abs()).max(y.abs());
             }
@@ -48,12 +46,11 @@ impl Scaling {
         }
         let exponent = if largest == 0.0 { 0 } else { TARGET_EXPONENT - floor_log2(largest) };
         let scaling = Scaling { exponent, largest };
-        let found = crate::parallel::map_range(chunks, |c| {
-            for (k, p) in chunk(c).iter().enumerate() {
+        let found = crate::parallel::map_chunks(points.len(), CHUNK, |chunk| {
+            for (index, p) in chunk.clone().zip(&points[chunk]) {
                 for (raw, s) in p.iter().zip(scaling.apply(*p)) {
                     // Judge by the raw value: a tiny coordinate may scale to exactly 0.0.
                     if *raw != 0.0 && s.abs() < MIN_ALLOWED {
-                        let index = c * CHUNK + k;
                         return Err(Error::CoordinateRange { index, value: *raw, largest });
                     }
                 }
