@@ -43,11 +43,7 @@ fn print_statistics(path: &Path) {
     }
     let [round2, round3] = round_cell_shares(&dt);
     let (leaves, size) = largest_tree_leaves(&dt);
-    println!(
-        "{} {round2:.3} {round3:.3} {leaves:.3} {size} {}",
-        dt.num_vertices(),
-        path.display()
-    );
+    println!("{} {round2:.3} {round3:.3} {leaves:.3} {size} {}", dt.num_vertices(), path.display());
 }
 
 /// The shares of inner vertices whose triangles' circumradii all stay below 2 and 3 times
