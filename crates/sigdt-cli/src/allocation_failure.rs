@@ -11,10 +11,9 @@
 //!
 //! Implementing [`GlobalAlloc`] is unsafe by definition; besides the speed benchmark's
 //! counting allocator and the one call of [`large_blocks`], this is the workspace's only
-//! `unsafe`. Every method forwards to
-//! [`System`] unchanged; the failure path allocates nothing (the message is formatted on
-//! the stack, the temporary files are removed with the lock taken only if it is free) and
-//! never unwinds.
+//! `unsafe`. Every method forwards to [`System`] unchanged; the failure path allocates
+//! nothing (the message is formatted on the stack, the temporary files are removed with
+//! the lock taken only if it is free) and never unwinds.
 //!
 //! [`memory::check`]: crate::memory
 //! [`large_blocks`]: crate::large_blocks
