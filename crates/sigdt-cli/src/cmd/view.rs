@@ -94,7 +94,7 @@ pub fn run(args: &ViewArgs, input: &Input) -> Result<()> {
     let triangles: &[[usize; 3]] = match &trace {
         Some(trace) => &trace.triangles,
         None => {
-            made = in_canonical_order(dt.input_triangles());
+            made = dt.input_triangles_in_canonical_order();
             &made
         }
     };
@@ -153,17 +153,6 @@ fn too_many_to_view(input: &Path, n: usize) -> Result<()> {
         );
     }
     Ok(())
-}
-
-/// `triangles`, each from its smallest index (counter-clockwise kept), sorted: the order of
-/// `sigdt::Trace::triangles`.
-fn in_canonical_order(mut triangles: Vec<[usize; 3]>) -> Vec<[usize; 3]> {
-    for t in &mut triangles {
-        let k = (0..3).min_by_key(|&i| t[i]).unwrap_or(0);
-        t.rotate_left(k);
-    }
-    triangles.sort_unstable();
-    triangles
 }
 
 #[cfg(test)]

@@ -89,12 +89,8 @@ impl Trace {
     /// each triangle from its smallest input index (counter-clockwise kept), sorted; the
     /// initial labels and the steps follow them.
     pub(crate) fn in_canonical_order(mut self) -> Trace {
-        let rotated: Vec<[usize; 3]> = (self.triangles.iter())
-            .map(|t| {
-                let k = (0..3).min_by_key(|&i| t[i]).unwrap_or(0);
-                [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
-            })
-            .collect();
+        let rotated: Vec<[usize; 3]> =
+            self.triangles.iter().map(|&t| crate::delaunay::from_smallest(t)).collect();
         let mut order: Vec<usize> = (0..rotated.len()).collect();
         order.sort_unstable_by_key(|&t| rotated[t]);
         let mut rank = vec![0; order.len()];

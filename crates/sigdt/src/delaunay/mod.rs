@@ -168,6 +168,18 @@ impl Triangulation {
             .collect()
     }
 
+    /// [`input_triangles`](Self::input_triangles) in an order that does not depend on how
+    /// the arrays are laid out (which varies with the thread count): each triangle from its
+    /// smallest index (counter-clockwise kept), sorted. `sigdt view` lists them so, as the
+    /// trace does.
+    #[doc(hidden)]
+    pub fn input_triangles_in_canonical_order(&self) -> Vec<[usize; 3]> {
+        let mut triangles: Vec<[usize; 3]> =
+            self.input_triangles().into_iter().map(from_smallest).collect();
+        triangles.sort_unstable();
+        triangles
+    }
+
     /// Vertex where half-edge `h` starts.
     #[inline]
     pub fn origin(&self, h: u32) -> u32 {
@@ -312,4 +324,10 @@ impl Iterator for Outgoing<'_> {
         self.current = if twin == self.start { EMPTY } else { twin };
         Some(h)
     }
+}
+
+/// The triangle `t` rotated to start at its smallest index (its orientation kept).
+pub(crate) fn from_smallest(t: [usize; 3]) -> [usize; 3] {
+    let k = (0..3).min_by_key(|&i| t[i]).unwrap_or(0);
+    [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
 }
