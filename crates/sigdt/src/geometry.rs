@@ -43,7 +43,8 @@ pub fn segment_distance(q: Point, a: Point, b: Point) -> f64 {
 }
 
 /// Distance from `q` to the closed segment `ab`, and the parameter in `[0, 1]` of the
-/// nearest point of the segment (`0` when the segment is a point).
+/// nearest point of the segment (`0` when the segment is a point). Measured as [`distance`]
+/// measures (not `hypot`, which guards a range the coordinates never reach, slowly).
 pub fn segment_foot(q: Point, a: Point, b: Point) -> (f64, f64) {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let len2 = dx * dx + dy * dy;
@@ -53,7 +54,7 @@ pub fn segment_foot(q: Point, a: Point, b: Point) -> (f64, f64) {
         0.0
     };
     let foot = [a[0] + t * dx, a[1] + t * dy];
-    ((q[0] - foot[0]).hypot(q[1] - foot[1]), t)
+    (distance(q, foot), t)
 }
 
 /// Distance from `q` to the ray that starts at `from` and goes on in the direction
@@ -68,7 +69,7 @@ pub fn ray_distance(q: Point, behind: Point, from: Point) -> f64 {
         0.0
     };
     let foot = [from[0] + t * dx, from[1] + t * dy];
-    (q[0] - foot[0]).hypot(q[1] - foot[1])
+    distance(q, foot)
 }
 
 /// How much the polyline `p → q → r` turns at `q`, in radians: 0 straight on, π straight
