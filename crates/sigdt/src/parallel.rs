@@ -52,7 +52,7 @@ pub(crate) fn update_slice<T: Send>(items: &mut [T], f: impl Fn(&mut T) + Sync +
 }
 
 /// Sorts distinct values (so that stability cannot matter).
-pub(crate) fn sort_unstable(items: &mut [u64]) {
+pub(crate) fn sort_unstable<T: Ord + Send>(items: &mut [T]) {
     #[cfg(feature = "parallel")]
     if items.len() >= MIN_PARALLEL {
         use rayon::prelude::*;

@@ -146,3 +146,22 @@ fn one_large_set_is_the_same_on_every_pool_size() {
         }
     }
 }
+
+#[test]
+fn proximity_graphs_are_the_same_on_every_pool_size() {
+    // Above the size where the per-point loops go parallel (2^14): the kNN graph and the
+    // SIG (k-d tree queries), the EMST (a parallel sort) on pools of 1 and 2 threads.
+    use sigdt::{proximity_graph, GraphKind};
+    let points = random_closed_curve(3, 20_000).shuffled(4).points;
+    let mut grid: Vec<Point> = (0..20_164).map(|i| [(i % 142) as f64, (i / 142) as f64]).collect();
+    Rng::new(5).shuffle(&mut grid);
+    for points in [&points, &grid] {
+        for kind in [GraphKind::Knn { k: 4 }, GraphKind::Sig, GraphKind::Emst] {
+            let on = |threads: usize| {
+                let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+                pool.install(|| proximity_graph(points, kind).unwrap())
+            };
+            assert_eq!(on(1), on(2), "{kind:?}: 1 and 2 threads differ");
+        }
+    }
+}

@@ -53,22 +53,21 @@ pub fn hnn_crust(dt: &Triangulation) -> Vec<[u32; 2]> {
     let points: Vec<Point> = (0..dt.num_vertices() as u32).map(|v| dt.point(v)).collect();
     let tree = KdTree::new(&points);
     let others = K.min(points.len()).saturating_sub(1);
-    // Steps 1–3: nn1 and nn2 of every point.
-    let chosen: Vec<[Option<u32>; 2]> = (0..points.len() as u32)
-        .map(|p| {
-            let near = nearest(dt, &tree, &points, p, others);
-            let Some(&n1) = near.first() else {
-                return [None, None];
-            };
-            let (pp, n) = (points[p as usize], points[n1 as usize]);
-            let n2 = near[1..].iter().copied().find(|&r| {
-                let r = points[r as usize];
-                // |nn1 r| > |p nn1| and |nn1 r| > |p r|.
-                farther(n, r, pp) && farther(r, n, pp)
-            });
-            [Some(n1), n2]
-        })
-        .collect();
+    // Steps 1–3: nn1 and nn2 of every point, each on its own (in parallel on a pool).
+    let chosen: Vec<[Option<u32>; 2]> = crate::parallel::map_range(points.len(), |p| {
+        let p = p as u32;
+        let near = nearest(dt, &tree, &points, p, others);
+        let Some(&n1) = near.first() else {
+            return [None, None];
+        };
+        let (pp, n) = (points[p as usize], points[n1 as usize]);
+        let n2 = near[1..].iter().copied().find(|&r| {
+            let r = points[r as usize];
+            // |nn1 r| > |p nn1| and |nn1 r| > |p r|.
+            farther(n, r, pp) && farther(r, n, pp)
+        });
+        [Some(n1), n2]
+    });
     // Step 4: mutual choices, each edge once (from its lower vertex).
     let mut pairs = Vec::with_capacity(points.len());
     for (p, choice) in chosen.iter().enumerate() {

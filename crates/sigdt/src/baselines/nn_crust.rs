@@ -42,9 +42,9 @@ use std::cmp::Ordering;
 /// The NN-CRUST edges of `dt` (a [`Shape::Proper`](crate::delaunay::Shape::Proper)
 /// triangulation) as pairs of vertices; an edge may appear twice.
 pub fn nn_crust(dt: &Triangulation) -> Vec<[u32; 2]> {
-    let m = dt.num_vertices() as u32;
-    let mut pairs = Vec::with_capacity(2 * m as usize);
-    for p in 0..m {
+    // Each point's two edges on their own (in parallel on a pool), listed in point order.
+    let chosen = crate::parallel::map_range(dt.num_vertices(), |p| {
+        let p = p as u32;
         let pp = dt.point(p);
         // (squared length, input index, vertex) of a neighbour; smaller is nearer.
         let key = |s: u32| (squared_distance(pp, dt.point(s)), dt.input_index(s), s);
@@ -53,20 +53,17 @@ pub fn nn_crust(dt: &Triangulation) -> Vec<[u32; 2]> {
         let neighbours = || dt.incident(p).map(|h| dt.other(h, p));
         // Step 1: nearest neighbour.
         let Some((_, _, q)) = neighbours().map(key).min_by(nearer) else {
-            continue; // unreachable: every vertex of a proper triangulation has an edge
+            return [None, None]; // unreachable: every vertex of a proper triangulation has an edge
         };
-        pairs.push([p, q]);
         // Step 2: nearest neighbour in the closed half-plane away from q.
         let qq = dt.point(q);
         let half = neighbours()
             .filter(|&s| dot_sign(pp, qq, dt.point(s)) != Ordering::Greater)
             .map(key)
             .min_by(nearer);
-        if let Some((_, _, s)) = half {
-            pairs.push([p, s]);
-        }
-    }
-    pairs
+        [Some([p, q]), half.map(|(_, _, s)| [p, s])]
+    });
+    chosen.into_iter().flatten().flatten().collect()
 }
 
 /// The exact sign of `(s - p)·(q - p)`.

@@ -33,23 +33,22 @@ pub fn minimum_spanning_forest(dt: &Triangulation, keep: impl Fn(u32) -> bool) -
 pub(crate) fn sorted_by_length(dt: &Triangulation, edges: impl Iterator<Item = u32>) -> Vec<u32> {
     // One 128-bit key a half-edge sorts fastest; equal lengths, rare but for lattices, are
     // then put in input-index order run by run.
+    // Both sorts on the pool when it has several threads: the keys are distinct (each holds
+    // its half-edge), so the order is the same on every thread count.
     let mut keyed: Vec<u128> =
         edges.map(|h| u128::from(length_key(dt, h)) << 64 | u128::from(h)).collect();
-    keyed.sort_unstable();
+    crate::parallel::sort_unstable(&mut keyed);
     let pair = |k: &u128| {
         let h = *k as u32;
         let (a, b) = (dt.input_index(dt.origin(h)), dt.input_index(dt.dest(h)));
         (a.min(b), a.max(b))
     };
-    let mut start = 0;
-    while start < keyed.len() {
-        let length = keyed[start] >> 64;
-        let end = start + keyed[start..].iter().take_while(|&&k| k >> 64 == length).count();
-        if end - start > 1 {
-            keyed[start..end].sort_unstable_by_key(pair);
+    let same_length = |a: &u128, b: &u128| a >> 64 == b >> 64;
+    crate::parallel::for_each_run(&mut keyed, same_length, |run| {
+        if run.len() > 1 {
+            run.sort_unstable_by_key(pair);
         }
-        start = end;
-    }
+    });
     keyed.into_iter().map(|k| k as u32).collect()
 }
 

@@ -16,15 +16,21 @@ pub(crate) fn knn(dt: &Triangulation, k: usize) -> Vec<Edge> {
     // No point has more than the others as neighbours; this also keeps `k + 8` finite.
     let k = k.min(points.len().saturating_sub(1));
     let tree = KdTree::new(&points);
-    let mut pairs = Vec::with_capacity(points.len() * k);
-    for v in 0..points.len() as u32 {
+    // Each point's neighbours on their own (in parallel on a pool), listed in point order.
+    let nearest = crate::parallel::map_range(points.len(), |v| {
+        let v = v as u32;
         // Ask for more than k so that exact distance ties are broken by input index.
         let mut near = tree.nearest(points[v as usize], k + 8, v);
         near.sort_by(|a, b| {
             a.0.total_cmp(&b.0).then(dt.input_index(a.1).cmp(&dt.input_index(b.1)))
         });
-        pairs.extend(near.into_iter().take(k).map(|(_, w)| [v, w]));
-    }
+        near.truncate(k);
+        near
+    });
+    let pairs = nearest
+        .iter()
+        .enumerate()
+        .flat_map(|(v, near)| near.iter().map(move |&(_, w)| [v as u32, w]));
     dt.to_input_edges(pairs)
 }
 

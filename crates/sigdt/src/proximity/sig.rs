@@ -26,23 +26,21 @@ pub(crate) fn sig(dt: &Triangulation) -> Vec<Edge> {
     let r = nearest_vertex_distances(dt);
     let points: Vec<Point> = (0..dt.num_vertices() as u32).map(|v| dt.point(v)).collect();
     let tree = KdTree::new(&points);
-    let mut pairs = Vec::new();
-    let mut found = Vec::new();
-    for p in 0..points.len() as u32 {
-        let rp = r[p as usize];
-        if !rp.is_finite() {
-            continue;
+    // Each point's edges on their own (in parallel on a pool), listed in point order.
+    let edges = crate::parallel::map_range(points.len(), |p| {
+        let (p, rp) = (p as u32, r[p]);
+        let mut found = Vec::new();
+        if rp.is_finite() {
+            tree.within(points[p as usize], 2.0 * rp * (1.0 + TIE_SLACK), &mut found);
         }
-        found.clear();
-        tree.within(points[p as usize], 2.0 * rp * (1.0 + TIE_SLACK), &mut found);
-        for &q in &found {
+        found.retain(|&q| {
             let rq = r[q as usize];
-            let larger = (rp, p) > (rq, q);
-            if larger && is_sig_edge(distance(points[p as usize], points[q as usize]), rp, rq) {
-                pairs.push([p, q]);
-            }
-        }
-    }
+            (rp, p) > (rq, q)
+                && is_sig_edge(distance(points[p as usize], points[q as usize]), rp, rq)
+        });
+        found
+    });
+    let pairs = edges.iter().enumerate().flat_map(|(p, qs)| qs.iter().map(move |&q| [p as u32, q]));
     dt.to_input_edges(pairs)
 }
 
