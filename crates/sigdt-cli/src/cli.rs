@@ -129,7 +129,8 @@ pub struct Cli {
     /// another is refused (sigdt does not transform coordinates).
     #[arg(long, global = true, value_name = "EPSG:N", value_parser = parse_crs)]
     pub crs: Option<sigdt_io::Crs>,
-    /// Threads for the data-parallel passes (sorting, nearest neighbours, the SIGDT test);
+    /// Threads for the data-parallel passes (sorting, the triangulation, the SIGDT test, the
+    /// sampling check, nearest-neighbour queries);
     /// by default every core, or RAYON_NUM_THREADS when it is set; more than the cores count
     /// as the cores. The output is the same, byte for byte, at every thread count.
     #[arg(long, global = true, value_name = "N",
