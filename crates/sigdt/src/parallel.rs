@@ -104,6 +104,58 @@ pub(crate) fn map_chunks<T: Send>(
     (0..n.div_ceil(chunk)).map(|c| f(range(c))).collect()
 }
 
+/// At most this many tables in [`tally`]: each beyond the first costs a table's memory.
+#[cfg(feature = "parallel")]
+const MAX_TALLY_PARTS: usize = 4;
+
+/// A table of `len` cells summed over the items `0..n`: `add_range(range, table)` adds the
+/// contributions of the items in `range` to `table` (whose cells start at `zero`), for
+/// passes that scatter each item's contribution to cells (half-edges to their vertices).
+///
+/// On a pool of several threads, from [`MIN_PARALLEL`] items, the items are split into as
+/// many ranges as threads (at most [`MAX_TALLY_PARTS`]), each summed into a table of its
+/// own, and the tables are then added cell by cell with `merge(cell, other)`: every extra
+/// table costs `len` cells of memory while it lives. `merge` must be commutative and
+/// associative with `zero` as its identity (integer sums, wrapping or saturating; minima),
+/// so that the result does not depend on the split.
+pub(crate) fn tally<C: Copy + Send + Sync>(
+    n: usize,
+    len: usize,
+    zero: C,
+    add_range: impl Fn(std::ops::Range<usize>, &mut [C]) + Sync + Send,
+    merge: impl Fn(&mut C, C) + Sync + Send,
+) -> Vec<C> {
+    #[cfg(feature = "parallel")]
+    if n >= MIN_PARALLEL && rayon::current_num_threads() > 1 {
+        use rayon::prelude::*;
+        let parts = rayon::current_num_threads().min(MAX_TALLY_PARTS);
+        let chunk = n.div_ceil(parts);
+        let mut tables: Vec<Vec<C>> = (0..parts)
+            .into_par_iter()
+            .map(|p| {
+                let mut table = vec![zero; len];
+                add_range(p * chunk..((p + 1) * chunk).min(n), &mut table);
+                table
+            })
+            .collect();
+        let rest = tables.split_off(1);
+        let mut sum = tables.pop().unwrap_or_default();
+        const BLOCK: usize = 1 << 14;
+        sum.par_chunks_mut(BLOCK).enumerate().for_each(|(b, cells)| {
+            for table in &rest {
+                for (cell, &other) in cells.iter_mut().zip(&table[b * BLOCK..]) {
+                    merge(cell, other);
+                }
+            }
+        });
+        return sum;
+    }
+    let _ = &merge;
+    let mut table = vec![zero; len];
+    add_range(0..n, &mut table);
+    table
+}
+
 /// How many times to halve `n` points for the divide-and-conquer triangulation
 /// (`delaunay::divide`): until every thread of the current pool has a part (at most 16
 /// parts), from 2^16 points on; 0 (insert them one by one) on one thread or fewer points.
@@ -114,4 +166,50 @@ pub(crate) fn halvings(n: usize) -> u32 {
     }
     let _ = n;
     0
+}
+
+#[cfg(all(test, feature = "parallel"))]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_tally_does_not_depend_on_the_pool_size() {
+        // Items scattered over cells with wrapping byte sums and with minima, on pools of one
+        // thread to past MAX_TALLY_PARTS: the sequential table every time.
+        let (n, len) = (3 * MIN_PARALLEL + 17, 1001);
+        let cell = |i: usize| i * 7919 % len;
+        let run = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+            pool.install(|| {
+                let sums = tally(
+                    n,
+                    len,
+                    0u8,
+                    |range, table| {
+                        range.for_each(|i| table[cell(i)] = table[cell(i)].wrapping_add(i as u8))
+                    },
+                    |a, b| *a = a.wrapping_add(b),
+                );
+                let minima = tally(
+                    n,
+                    len,
+                    f64::INFINITY,
+                    |range, table| {
+                        range.for_each(|i| table[cell(i)] = table[cell(i)].min(i as f64))
+                    },
+                    |a, b| *a = a.min(b),
+                );
+                (sums, minima)
+            })
+        };
+        let mut sums = vec![0u8; len];
+        let mut minima = vec![f64::INFINITY; len];
+        for i in 0..n {
+            sums[cell(i)] = sums[cell(i)].wrapping_add(i as u8);
+            minima[cell(i)] = minima[cell(i)].min(i as f64);
+        }
+        for threads in 1..=MAX_TALLY_PARTS + 1 {
+            assert_eq!(run(threads), (sums.clone(), minima.clone()), "{threads} threads");
+        }
+    }
 }

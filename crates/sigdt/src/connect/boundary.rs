@@ -78,12 +78,18 @@ impl<'a> Boundary<'a> {
                 }
             }
         }
+        let contribution = |h: u32| initial_contribution(dt, g, &inside, h);
+        let (edges, star) = crate::parallel::join(
+            || boundary_edges(dt, g, &inside),
+            || StarTable::counted(dt, contribution),
+        );
+        let class = crate::parallel::map_range(dt.num_vertices(), |v| star.get(v as u32).class());
         let mut bd = Boundary {
             dt,
             inside,
-            edges: EdgeMask::new(dt),
-            class: vec![VertexClass::Manifold; dt.num_vertices()],
-            star: StarTable::new(dt),
+            edges,
+            class,
+            star,
             components: UnionFind::new(0),
             non_manifold: 0,
             interior: 0,
@@ -91,7 +97,10 @@ impl<'a> Boundary<'a> {
             stamp: Vec::new(),
             epoch: 0,
         };
-        bd.boundary_and_classes(g);
+        for v in 0..dt.num_vertices() {
+            debug_assert_eq!(bd.class[v], bd.classify_by_star(v as u32));
+            bd.count(bd.class[v], 1);
+        }
         bd
     }
 
@@ -106,24 +115,6 @@ impl<'a> Boundary<'a> {
             }
         }
         self.stamp = vec![0; dt.num_triangles()];
-    }
-
-    /// `B` from the labels, and the star counts and classes of all vertices, in one
-    /// sequential sweep over the edges: the same classes as walking every star.
-    fn boundary_and_classes(&mut self, g: &EdgeMask) {
-        let dt = self.dt;
-        for h in dt.edge_halfedges() {
-            if g.contains(h) && (!self.left_is_in(h) || !self.right_is_in(h)) {
-                self.edges.set(dt, h, true);
-            }
-            self.tally(h, true);
-        }
-        for v in 0..dt.num_vertices() {
-            let class = self.star.get(v as u32).class();
-            debug_assert_eq!(class, self.classify_by_star(v as u32));
-            self.class[v] = class;
-            self.count(class, 1);
-        }
     }
 
     /// What edge `h` adds to the star counts of its two ends.
@@ -274,5 +265,43 @@ impl<'a> Boundary<'a> {
         (0..self.class.len() as u32)
             .filter(|&v| self.class[v as usize] == VertexClass::Interior)
             .collect()
+    }
+}
+
+/// The boundary `B` of graph `g` under the labels `inside`: the edges of `g` with an
+/// exterior side, 64 half-edges to a word of the mask, in parallel on several threads (the
+/// test is the same for both halves of an edge, so each half is tested on its own).
+fn boundary_edges(dt: &Triangulation, g: &EdgeMask, inside: &[bool]) -> EdgeMask {
+    let halfedges = dt.num_halfedges();
+    let words = crate::parallel::map_range(halfedges.div_ceil(64), |w| {
+        let (mut word, mut edges) = (0u64, 0);
+        for h in 64 * w..(64 * w + 64).min(halfedges) {
+            let h = h as u32;
+            let twin = dt.twin(h);
+            let exterior_side =
+                !inside[(h / 3) as usize] || twin == EMPTY || !inside[(twin / 3) as usize];
+            if g.contains(h) && exterior_side {
+                word |= 1 << (h % 64);
+                // Each edge once: its half with the smaller index, or its one hull half.
+                edges += usize::from(h < twin);
+            }
+        }
+        (word, edges)
+    });
+    let count = words.iter().map(|&(_, edges)| edges).sum();
+    EdgeMask::from_words(words.into_iter().map(|(word, _)| word).collect(), count)
+}
+
+/// What edge `h` of graph `g` adds to the star counts of its ends under the labels `inside`,
+/// before any change: [`Boundary::contribution`] with `B` read off `g` and the labels (an
+/// edge of `g` with both sides exterior is on the boundary, so it dangles).
+fn initial_contribution(dt: &Triangulation, g: &EdgeMask, inside: &[bool], h: u32) -> StarCounts {
+    let twin = dt.twin(h);
+    let left = inside[(h / 3) as usize];
+    let right = twin != EMPTY && inside[(twin / 3) as usize];
+    StarCounts {
+        transitions: u32::from(left != right),
+        dangling: u32::from(!left && !right && g.contains(h)),
+        exterior: u32::from(!left || !right),
     }
 }

@@ -22,13 +22,24 @@ pub(crate) struct VertexLoops {
 
 /// The loops of the boundary `edges` of the interior triangles (`inside[t]`), as vertices.
 pub(crate) fn vertex_loops(dt: &Triangulation, inside: &[bool], edges: &EdgeMask) -> VertexLoops {
-    let mut successor = vec![EMPTY; dt.num_vertices()];
-    for h in 0..dt.num_halfedges() as u32 {
-        if edges.contains(h) && inside[(h / 3) as usize] {
-            debug_assert_eq!(successor[dt.origin(h) as usize], EMPTY, "non-manifold boundary");
-            successor[dt.origin(h) as usize] = dt.dest(h);
+    // The boundary half-edge leaving each vertex with the interior on its left, found in one
+    // pass over the half-edges split among the threads (`parallel::tally`): `h + 1`, the
+    // largest where a broken boundary has several, 0 where there is none.
+    let add_range = |range: std::ops::Range<usize>, leaving: &mut [u32]| {
+        for h in range.start as u32..range.end as u32 {
+            if edges.contains(h) && inside[(h / 3) as usize] {
+                let slot = &mut leaving[dt.origin(h) as usize];
+                debug_assert_eq!(*slot, 0, "non-manifold boundary");
+                *slot = (*slot).max(h + 1);
+            }
         }
-    }
+    };
+    let max = |a: &mut u32, b: u32| *a = (*a).max(b);
+    let (halfedges, vertices) = (dt.num_halfedges(), dt.num_vertices());
+    let mut successor = crate::parallel::tally(halfedges, vertices, 0, add_range, max);
+    crate::parallel::update_slice(&mut successor, |h| {
+        *h = if *h == 0 { EMPTY } else { dt.dest(*h - 1) };
+    });
     // A taken vertex's successor becomes VISITED (no vertex has that number: at most
     // EMPTY / 6 vertices), so the walk is bounded even on a broken boundary.
     const VISITED: u32 = EMPTY - 1;
@@ -61,10 +72,9 @@ impl VertexLoops {
             .starts
             .windows(2)
             .map(|w| {
-                let mut cycle: Vec<usize> = self.vertices[w[0]..w[1]]
-                    .iter()
-                    .map(|&v| input_index[v as usize] as usize)
-                    .collect();
+                let cycle = &self.vertices[w[0]..w[1]];
+                let mut cycle =
+                    crate::parallel::map_slice(cycle, |&v| input_index[v as usize] as usize);
                 let smallest = (0..cycle.len()).min_by_key(|&i| cycle[i]).unwrap_or(0);
                 cycle.rotate_left(smallest);
                 cycle

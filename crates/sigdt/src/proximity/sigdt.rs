@@ -48,8 +48,9 @@ pub fn sigdt_mask(dt: &Triangulation) -> EdgeMask {
 /// [`sigdt_mask`] and the degree of every vertex in it. Each half-edge is tested on its own
 /// (the test is symmetric bit for bit: `+` commutes and `dx² + dy²` does not depend on the
 /// direction), 64 to a word of the mask, in parallel when the pool has several threads;
-/// then one sequential pass counts, at the origin of every kept half-edge (and at both ends
-/// of a kept hull half-edge, which has no twin), each edge once at each end. Both passes
+/// then one pass over the half-edges (split among the threads, `parallel::tally`) counts,
+/// at the origin of every kept half-edge (and at both ends of a kept hull half-edge, which
+/// has no twin), each edge once at each end. Both passes
 /// are branch-free: the test keeps about every other edge, and branching on it mispredicted
 /// that often.
 pub(crate) fn sigdt_with_degrees(dt: &Triangulation) -> (EdgeMask, Vec<u32>) {
@@ -70,14 +71,16 @@ pub(crate) fn sigdt_with_degrees_for(dt: &Triangulation, r: &[f64]) -> (EdgeMask
             .rev()
             .fold(0u64, |word, h| word << 1 | u64::from(is_sig(h as u32)))
     });
-    let mut degree = vec![0u32; dt.num_vertices()];
-    for h in 0..halfedges as u32 {
-        let kept = u32::from(word_bit(&words, h));
-        degree[dt.origin(h) as usize] += kept;
-        if dt.twin(h) == EMPTY {
-            degree[dt.dest(h) as usize] += kept;
+    let add_range = |range: std::ops::Range<usize>, degree: &mut [u32]| {
+        for h in range.start as u32..range.end as u32 {
+            let kept = u32::from(word_bit(&words, h));
+            degree[dt.origin(h) as usize] += kept;
+            if dt.twin(h) == EMPTY {
+                degree[dt.dest(h) as usize] += kept;
+            }
         }
-    }
+    };
+    let degree = crate::parallel::tally(halfedges, dt.num_vertices(), 0, add_range, |d, e| *d += e);
     let count = degree.iter().map(|&d| d as usize).sum::<usize>() / 2;
     (EdgeMask::from_words(words, count), degree)
 }
