@@ -177,18 +177,23 @@ doc:
 	RUSTDOCFLAGS="-D warnings" $(CARGO) doc --locked --no-deps --workspace --features sigdt/geo-types --document-private-items
 
 ## bench: the speed tables (make bench SIZES=1e5,1e6,1e7 for the large sizes): Delaunay,
-## total, CGAL (when libcgal-dev is installed), memory per point, one thread against two;
+## total, CGAL (when libcgal-dev is installed), memory per point, one thread against two
+## and against all (a second table where there are more than two cores);
 ## then the whole `sigdt reconstruct` process against CGAL's, and `sigdt view` and `render`;
 ## then the slow baselines (FITCONNECT, STRETCHDENOISE, DISCUR, OPTIMALTRANSPORT) against
 ## SIG-CONNECT2D from 10^3 to 10^5 points, SIG-AUTO on a uniform scatter, and every method
 ## on its worst input (docs/reliability.md) at 1, 2 and 4·10^4 points (about 2 minutes).
 SIZES ?= 1e3,1e4,1e5,1e6
+# One thread is in every table; two and all of them each get a table of their own.
+BENCH_THREADS := $(sort 2 $(shell nproc 2>/dev/null || echo 2))
 CGAL_TOOL := $(TARGET_DIR)/cgal-delaunay
 bench: build
 	@if [ -f /usr/include/CGAL/Delaunay_triangulation_2.h ]; then $(MAKE) --no-print-directory cgal-delaunay; \
 	else echo "libcgal-dev is not installed: no CGAL column (apt-get install -y --no-install-recommends libcgal-dev)"; fi
-	$(CARGO) run --release --locked -p sigdt --example speed -- --sizes $(SIZES) \
-	  --cgal $(CGAL_TOOL) --cli $(SIGDT)
+	for threads in $(BENCH_THREADS); do \
+	  $(CARGO) run --release --locked -p sigdt --example speed -- --sizes $(SIZES) \
+	    --threads $$threads --cgal $(CGAL_TOOL) --cli $(SIGDT) || exit 1; \
+	done
 	$(CARGO) run --release --locked -p sigdt --example methods -- --sizes 1e3,1e4,1e5 \
 	  --methods sig-connect2d,fit-connect,stretch-denoise,discur,optimal-transport --limit 30
 	$(CARGO) run --release --locked -p sigdt --example methods -- --input scatter \
