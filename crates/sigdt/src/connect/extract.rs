@@ -22,24 +22,15 @@ pub(crate) struct VertexLoops {
 
 /// The loops of the boundary `edges` of the interior triangles (`inside[t]`), as vertices.
 pub(crate) fn vertex_loops(dt: &Triangulation, inside: &[bool], edges: &EdgeMask) -> VertexLoops {
-    // The boundary half-edge leaving each vertex with the interior on its left, found in one
-    // pass over the half-edges split among the threads (`parallel::tally`): `h + 1`, the
-    // largest where a broken boundary has several, 0 where there is none.
-    let add_range = |range: std::ops::Range<usize>, leaving: &mut [u32]| {
-        for h in range.start as u32..range.end as u32 {
-            if edges.contains(h) && inside[(h / 3) as usize] {
-                let slot = &mut leaving[dt.origin(h) as usize];
-                debug_assert_eq!(*slot, 0, "non-manifold boundary");
-                *slot = (*slot).max(h + 1);
-            }
+    // One sequential pass: split among the threads (`parallel::tally`) it was no faster on
+    // two, and its merge made it slower on one.
+    let mut successor = vec![EMPTY; dt.num_vertices()];
+    for h in 0..dt.num_halfedges() as u32 {
+        if edges.contains(h) && inside[(h / 3) as usize] {
+            debug_assert_eq!(successor[dt.origin(h) as usize], EMPTY, "non-manifold boundary");
+            successor[dt.origin(h) as usize] = dt.dest(h);
         }
-    };
-    let max = |a: &mut u32, b: u32| *a = (*a).max(b);
-    let (halfedges, vertices) = (dt.num_halfedges(), dt.num_vertices());
-    let mut successor = crate::parallel::tally(halfedges, vertices, 0, add_range, max);
-    crate::parallel::update_slice(&mut successor, |h| {
-        *h = if *h == 0 { EMPTY } else { dt.dest(*h - 1) };
-    });
+    }
     // A taken vertex's successor becomes VISITED (no vertex has that number: at most
     // EMPTY / 6 vertices), so the walk is bounded even on a broken boundary.
     const VISITED: u32 = EMPTY - 1;
