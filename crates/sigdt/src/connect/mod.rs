@@ -94,14 +94,8 @@ impl Outline {
     /// [`noisy_area`](crate::sampling_check::noisy_area)), as [`diagnose`](crate::sampling_check::diagnose)
     /// gives it for the same loops.
     pub(crate) fn check(&self, dt: &Triangulation) -> Vec<crate::result::Finding> {
-        use crate::sampling_check::{check_curves_with, Spacing};
-        // Every vertex's spacing in one pass over the half-edges (split among the threads),
-        // instead of a walk around each loop vertex in loop order, which misses the cache:
-        // the same values.
-        let r = crate::proximity::nearest::nearest_vertex_distances(dt);
-        let curves = self.loops.iter().map(|l| (l, true));
-        let mut found = check_curves_with(dt, curves, Spacing::Known(&r));
-        drop(r);
+        let mut found =
+            crate::sampling_check::check_curves(dt, self.loops.iter().map(|l| (l, true)));
         let rings: Vec<&[u32]> = self.loops.iter().collect();
         found.extend(crate::sampling_check::noisy_area(dt, &rings));
         found

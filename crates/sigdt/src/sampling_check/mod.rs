@@ -351,7 +351,7 @@ pub(crate) fn check_curves<'a>(
     check_curves_with(dt, curves, Spacing::Measured)
 }
 
-pub(crate) fn check_curves_with<'a>(
+fn check_curves_with<'a>(
     dt: &Triangulation,
     curves: impl IntoIterator<Item = (&'a [u32], bool)>,
     spacing: Spacing,
