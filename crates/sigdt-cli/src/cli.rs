@@ -130,7 +130,7 @@ pub struct Cli {
     #[arg(long, global = true, value_name = "EPSG:N", value_parser = parse_crs)]
     pub crs: Option<sigdt_io::Crs>,
     /// Threads for the data-parallel passes (sorting, the triangulation, the SIGDT test, the
-    /// sampling check, nearest-neighbour queries);
+    /// boundary's vertex counts, the sampling check, nearest-neighbour queries);
     /// by default every core, or RAYON_NUM_THREADS when it is set; more than the cores count
     /// as the cores. The output is the same, byte for byte, at every thread count.
     #[arg(long, global = true, value_name = "N",
