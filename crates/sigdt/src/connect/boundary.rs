@@ -275,12 +275,11 @@ fn boundary_edges(dt: &Triangulation, g: &EdgeMask, inside: &[bool]) -> EdgeMask
     let halfedges = dt.num_halfedges();
     let words = crate::parallel::map_range(halfedges.div_ceil(64), |w| {
         let (mut word, mut edges) = (0u64, 0);
-        for h in 64 * w..(64 * w + 64).min(halfedges) {
-            let h = h as u32;
+        for h in (64 * w..(64 * w + 64).min(halfedges)).map(|h| h as u32) {
             let twin = dt.twin(h);
             let exterior_side =
-                !inside[(h / 3) as usize] || twin == EMPTY || !inside[(twin / 3) as usize];
-            if g.contains(h) && exterior_side {
+                || !inside[(h / 3) as usize] || twin == EMPTY || !inside[(twin / 3) as usize];
+            if g.contains(h) && exterior_side() {
                 word |= 1 << (h % 64);
                 // Each edge once: its half with the smaller index, or its one hull half.
                 edges += usize::from(h < twin);
