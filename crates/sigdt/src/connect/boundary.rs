@@ -119,12 +119,7 @@ impl<'a> Boundary<'a> {
 
     /// What edge `h` adds to the star counts of its two ends.
     fn contribution(&self, h: u32) -> StarCounts {
-        let (left, right) = (self.left_is_in(h), self.right_is_in(h));
-        StarCounts {
-            transitions: u32::from(left != right),
-            dangling: u32::from(!left && !right && self.edges.contains(h)),
-            exterior: u32::from(!left || !right),
-        }
+        StarCounts::of_edge(self.left_is_in(h), self.right_is_in(h), self.edges.contains(h))
     }
 
     /// Adds (or takes away) edge `h`'s contribution to the star counts of its ends.
@@ -298,9 +293,5 @@ fn initial_contribution(dt: &Triangulation, g: &EdgeMask, inside: &[bool], h: u3
     let twin = dt.twin(h);
     let left = inside[(h / 3) as usize];
     let right = twin != EMPTY && inside[(twin / 3) as usize];
-    StarCounts {
-        transitions: u32::from(left != right),
-        dangling: u32::from(!left && !right && g.contains(h)),
-        exterior: u32::from(!left || !right),
-    }
+    StarCounts::of_edge(left, right, g.contains(h))
 }

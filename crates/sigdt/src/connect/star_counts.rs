@@ -32,6 +32,16 @@ pub(crate) struct StarCounts {
 }
 
 impl StarCounts {
+    /// What one edge adds: its sides' labels (interior or not) and whether it is on the
+    /// boundary `B` (it dangles when both sides are exterior).
+    pub(crate) fn of_edge(left: bool, right: bool, on_boundary: bool) -> StarCounts {
+        StarCounts {
+            transitions: u32::from(left != right),
+            dangling: u32::from(!left && !right && on_boundary),
+            exterior: u32::from(!left || !right),
+        }
+    }
+
     /// Adds `c` to every count (`add`), or takes it away.
     fn apply(&mut self, c: StarCounts, add: bool) {
         let step = |count: &mut u32, delta: u32| {

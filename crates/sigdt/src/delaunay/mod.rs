@@ -327,7 +327,7 @@ impl Iterator for Outgoing<'_> {
 }
 
 /// The triangle `t` rotated to start at its smallest index (its orientation kept).
-pub(crate) fn from_smallest(t: [usize; 3]) -> [usize; 3] {
+pub(crate) fn from_smallest<T: Ord + Copy>(t: [T; 3]) -> [T; 3] {
     let k = (0..3).min_by_key(|&i| t[i]).unwrap_or(0);
     [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
 }

@@ -43,10 +43,7 @@ impl FlatArrays {
         let mut out: Vec<[u32; 3]> = self
             .triangles
             .chunks_exact(3)
-            .map(|t| {
-                let k = (0..3).min_by_key(|&i| t[i]).unwrap_or(0);
-                [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
-            })
+            .map(|t| crate::delaunay::from_smallest([t[0], t[1], t[2]]))
             .collect();
         out.sort_unstable();
         out
